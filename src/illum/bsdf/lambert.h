@@ -1,0 +1,39 @@
+// Lambertian (ideal diffuse) reflection: f = ρ/π, reciprocal, albedo ρ at every angle.
+#pragma once
+
+#include "illum/bsdf/bxdf.h"
+#include "illum/math/warp.h"
+
+namespace illum {
+
+class LambertBxDF final : public BxDF {
+public:
+    explicit LambertBxDF(Color3 reflectance) : reflectance_(reflectance) {}
+
+    std::uint8_t flags() const override { return reflectance_.is_black() ? kNone : kDiffuseReflection; }
+
+    Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode) const override {
+        if (!same_hemisphere(wo, wi)) return {};
+        return Bsdf3(reflectance_ * kInvPi);
+    }
+
+    std::optional<BSDFSample> sample(Vector3f wo, float, Point2f u, TransportMode) const override {
+        Vector3f wi = sample_cosine_hemisphere(u);
+        if (wo.z < 0) wi.z = -wi.z;
+        float pdf = cosine_hemisphere_pdf(std::abs(wi.z));
+        if (!(pdf > 0)) return std::nullopt;
+        return BSDFSample{wi, Bsdf3(reflectance_ * kInvPi), SolidAnglePdf(pdf), kDiffuseReflection};
+    }
+
+    SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode) const override {
+        if (!same_hemisphere(wo, wi)) return SolidAnglePdf(0);
+        return SolidAnglePdf(cosine_hemisphere_pdf(std::abs(wi.z)));
+    }
+
+    Color3 reflectance() const { return reflectance_; }
+
+private:
+    Color3 reflectance_;
+};
+
+} // namespace illum

@@ -1,0 +1,1 @@
+#include "illum/math/warp.h"

@@ -1,0 +1,183 @@
+// Radiometric quantities with their units in the type (DESIGN.md §3).
+//
+// A quantity carries integer exponents of watt, metre and steradian. Products and quotients add and
+// subtract exponents; sums need equal units. So radiance [W m^-2 sr^-1] x solid angle [sr] is
+// irradiance [W m^-2], a BRDF [sr^-1] x irradiance is radiance, and radiance + irradiance does not
+// compile. A tag separates quantities that share units but not meaning: biradiance (intensity / r^2,
+// before the cosine; McGuire's Graphics Codex) has the units of irradiance but is not one; a product
+// drops the tag. Everything is a thin wrapper over Color3 or float: zero cost at run time.
+#pragma once
+
+#include <type_traits>
+
+#include "illum/radiometry/color.h"
+
+namespace illum {
+
+struct NoTag {};
+struct BiradianceTag {};
+struct AreaPdfTag {};
+
+// A scalar quantity (solid angle, area, a pdf) with units W^w m^m sr^s.
+template <int W, int M, int S, class Tag = NoTag>
+struct Scalar {
+    float value = 0;
+    constexpr Scalar() = default;
+    constexpr explicit Scalar(float v) : value(v) {}
+    constexpr Scalar operator+(Scalar o) const { return Scalar(value + o.value); }
+    constexpr Scalar operator-(Scalar o) const { return Scalar(value - o.value); }
+    constexpr Scalar operator*(float s) const { return Scalar(value * s); }
+    constexpr Scalar operator/(float s) const { return Scalar(value / s); }
+    Scalar& operator+=(Scalar o) { return *this = *this + o; }
+    Scalar& operator*=(float s) { return *this = *this * s; }
+    constexpr auto operator<=>(const Scalar&) const = default;
+};
+// A dimensionless scalar is a plain float.
+template <class Tag>
+struct Scalar<0, 0, 0, Tag>;
+
+template <int W, int M, int S, class Tag>
+constexpr Scalar<W, M, S, Tag> operator*(float s, Scalar<W, M, S, Tag> q) {
+    return q * s;
+}
+
+namespace detail {
+template <int W, int M, int S>
+struct ScalarOf {
+    using type = Scalar<W, M, S>;
+};
+template <>
+struct ScalarOf<0, 0, 0> {
+    using type = float;
+};
+template <int W, int M, int S>
+constexpr auto make_scalar(float v) {
+    if constexpr (W == 0 && M == 0 && S == 0) return v;
+    else return Scalar<W, M, S>(v);
+}
+} // namespace detail
+
+template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
+constexpr auto operator*(Scalar<W1, M1, S1, T1> a, Scalar<W2, M2, S2, T2> b) {
+    return detail::make_scalar<W1 + W2, M1 + M2, S1 + S2>(a.value * b.value);
+}
+template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
+constexpr auto operator/(Scalar<W1, M1, S1, T1> a, Scalar<W2, M2, S2, T2> b) {
+    return detail::make_scalar<W1 - W2, M1 - M2, S1 - S2>(a.value / b.value);
+}
+
+// An RGB quantity with units W^w m^m sr^s.
+template <int W, int M, int S, class Tag = NoTag>
+struct Quantity3 {
+    Color3 rgb;
+    constexpr Quantity3() = default;
+    constexpr explicit Quantity3(Color3 c) : rgb(c) {}
+    constexpr explicit Quantity3(float v) : rgb(v) {}
+    constexpr Quantity3(float r, float g, float b) : rgb(r, g, b) {}
+
+    constexpr float operator[](int i) const { return rgb[i]; }
+    constexpr Quantity3 operator+(Quantity3 o) const { return Quantity3(rgb + o.rgb); }
+    constexpr Quantity3 operator-(Quantity3 o) const { return Quantity3(rgb - o.rgb); }
+    constexpr Quantity3 operator*(float s) const { return Quantity3(rgb * s); }
+    constexpr Quantity3 operator/(float s) const { return Quantity3(rgb / s); }
+    // Scaling by a dimensionless reflectance or throughput keeps the units.
+    constexpr Quantity3 operator*(Color3 c) const { return Quantity3(rgb * c); }
+    Quantity3& operator+=(Quantity3 o) { return *this = *this + o; }
+    Quantity3& operator*=(float s) { return *this = *this * s; }
+    Quantity3& operator*=(Color3 c) { return *this = *this * c; }
+    constexpr bool operator==(const Quantity3&) const = default;
+
+    constexpr bool is_black() const { return rgb.is_black(); }
+    constexpr float max_component() const { return rgb.max_component(); }
+    constexpr float luminance() const { return rgb.luminance(); }
+    constexpr float average() const { return rgb.average(); }
+    bool is_finite() const { return rgb.is_finite(); }
+};
+
+namespace detail {
+template <int W, int M, int S>
+constexpr auto make_quantity3(Color3 c) {
+    if constexpr (W == 0 && M == 0 && S == 0) return c;
+    else return Quantity3<W, M, S>(c);
+}
+} // namespace detail
+
+template <int W, int M, int S, class T>
+constexpr Quantity3<W, M, S, T> operator*(float s, Quantity3<W, M, S, T> q) {
+    return q * s;
+}
+template <int W, int M, int S, class T>
+constexpr Quantity3<W, M, S, T> operator*(Color3 c, Quantity3<W, M, S, T> q) {
+    return q * c;
+}
+template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
+constexpr auto operator*(Quantity3<W1, M1, S1, T1> a, Quantity3<W2, M2, S2, T2> b) {
+    return detail::make_quantity3<W1 + W2, M1 + M2, S1 + S2>(a.rgb * b.rgb);
+}
+template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
+constexpr auto operator/(Quantity3<W1, M1, S1, T1> a, Quantity3<W2, M2, S2, T2> b) {
+    return detail::make_quantity3<W1 - W2, M1 - M2, S1 - S2>(a.rgb / b.rgb);
+}
+template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
+constexpr auto operator*(Quantity3<W1, M1, S1, T1> a, Scalar<W2, M2, S2, T2> b) {
+    return detail::make_quantity3<W1 + W2, M1 + M2, S1 + S2>(a.rgb * b.value);
+}
+template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
+constexpr auto operator*(Scalar<W2, M2, S2, T2> b, Quantity3<W1, M1, S1, T1> a) {
+    return a * b;
+}
+template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
+constexpr auto operator/(Quantity3<W1, M1, S1, T1> a, Scalar<W2, M2, S2, T2> b) {
+    return detail::make_quantity3<W1 - W2, M1 - M2, S1 - S2>(a.rgb / b.value);
+}
+// Color3 (dimensionless) over a scalar quantity, e.g. a BSDF-weighted throughput divided by a pdf.
+template <int W, int M, int S, class T>
+constexpr auto operator/(Color3 a, Scalar<W, M, S, T> b) {
+    return detail::make_quantity3<-W, -M, -S>(a / b.value);
+}
+template <int W, int M, int S, class T>
+constexpr auto operator*(Color3 a, Scalar<W, M, S, T> b) {
+    return detail::make_quantity3<W, M, S>(a * b.value);
+}
+
+// Scalars.
+using SolidAngle = Scalar<0, 0, 1>;            // [sr]
+using Area = Scalar<0, 2, 0>;                  // [m^2]
+using SolidAnglePdf = Scalar<0, 0, -1>;        // probability per steradian [sr^-1]
+using AreaPdf = Scalar<0, -2, 0, AreaPdfTag>;  // probability per square metre [m^-2]
+
+// RGB quantities.
+using Power3 = Quantity3<1, 0, 0>;                       // radiant flux [W]
+using Intensity3 = Quantity3<1, 0, -1>;                  // radiant intensity [W sr^-1]
+using Irradiance3 = Quantity3<1, -2, 0>;                 // irradiance = radiosity = exitance [W m^-2]
+using Radiosity3 = Irradiance3;
+using Radiance3 = Quantity3<1, -2, -1>;                  // [W m^-2 sr^-1]
+using Biradiance3 = Quantity3<1, -2, 0, BiradianceTag>;  // intensity / r^2, before the cosine [W m^-2]
+using Bsdf3 = Quantity3<0, 0, -1>;                       // BSDF value [sr^-1]
+
+// Conversions the physics does, by name.
+
+// A point source of intensity I at distance r delivers biradiance I / r^2.
+constexpr Biradiance3 biradiance(Intensity3 i, float distance_squared) {
+    return Biradiance3(i.rgb / distance_squared);
+}
+// Incident radiance over a pdf-sampled direction: the one-sample estimate of ∫ L dω, a biradiance that
+// the reflection equation turns into radiance with f and the cosine.
+constexpr Biradiance3 biradiance(Radiance3 l, SolidAnglePdf pdf) { return Biradiance3(l.rgb / pdf.value); }
+// Radiance reflected by a BSDF from a biradiance arriving at angle θ: f · E_bi · cos θ.
+constexpr Radiance3 reflected(Bsdf3 f, Biradiance3 e, float cos_theta) {
+    return Radiance3(f.rgb * e.rgb * cos_theta);
+}
+// A pdf per unit area of a point at distance r seen at angle θ (cos of the angle between its normal and
+// the line of sight) becomes a pdf per steradian: p_ω = p_A r^2 / |cos θ|.
+constexpr SolidAnglePdf to_solid_angle(AreaPdf p, float distance_squared, float abs_cos) {
+    return SolidAnglePdf(p.value * distance_squared / abs_cos);
+}
+// Irradiance on a surface from radiance over a solid angle at a cosine.
+constexpr Irradiance3 irradiance(Radiance3 l, SolidAngle w, float cos_theta) {
+    return Irradiance3(l.rgb * w.value * cos_theta);
+}
+// The exitance of a Lambertian emitter of radiance L: M = π L; its power over an area A: Φ = π A L.
+constexpr Irradiance3 lambertian_exitance(Radiance3 l) { return Irradiance3(l.rgb * 3.14159265358979323846f); }
+
+} // namespace illum
