@@ -1,2 +1,34 @@
+// illum: the command line. `illum render` with no scene renders the built-in Cornell box.
 #include <cstdio>
-int main() { std::puts("illum " ILLUM_VERSION); }
+#include <exception>
+
+#include <fmt/core.h>
+
+#include "commands.h"
+#include "illum/util/error.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"illum: a physically based renderer and reflectance toolkit"};
+    app.set_version_flag("--version", "illum " ILLUM_VERSION);
+    app.require_subcommand(0, 1);
+    illum::cli::add_render_command(app);
+    illum::cli::add_bench_command(app);
+    illum::cli::add_brdf_command(app);
+    try {
+        app.parse(argc, argv);
+        if (app.get_subcommands().empty()) {
+            // No subcommand: render the built-in scene, as `illum render` does.
+            return app.get_subcommand("render")->parse(std::vector<std::string>{}), 0;
+        }
+    } catch (const CLI::ParseError& e) {
+        int code = app.exit(e);
+        return code == 0 ? 0 : 2;
+    } catch (const illum::Error& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 1;
+    }
+    return 0;
+}
