@@ -1,0 +1,66 @@
+#include "illum/camera/camera.h"
+
+#include <cmath>
+
+#include "illum/math/warp.h"
+
+namespace illum {
+
+Screen PerspectiveCamera::default_screen(int width, int height) {
+    float aspect = float(width) / float(height);
+    if (aspect > 1) return {-aspect, aspect, -1, 1};
+    return {-1, 1, -1 / aspect, 1 / aspect};
+}
+
+namespace {
+// Raster x in [0, width] maps to screen x0..x1; raster y in [0, height] maps to y1..y0 (y down).
+void raster_to_screen(const Screen& s, int width, int height, float scale, float* ax, float* bx, float* ay,
+                      float* by) {
+    *bx = (s.x1 - s.x0) / width * scale;
+    *ax = s.x0 * scale;
+    *by = -(s.y1 - s.y0) / height * scale;
+    *ay = s.y1 * scale;
+}
+
+// Thin lens: the ray through the lens point that meets the pinhole ray at the plane of focus.
+Ray thin_lens(Point3f p_camera_dir_origin, Vector3f dir, float lens_radius, float focal_distance, Point2f u) {
+    Ray r{p_camera_dir_origin, dir, kInfinity};
+    if (lens_radius <= 0) return r;
+    Point2f lens = sample_uniform_disk_concentric(u);
+    Point3f p_lens{lens.x * lens_radius, lens.y * lens_radius, 0};
+    float ft = (focal_distance - r.o.z) / r.d.z;
+    Point3f p_focus = r(ft);
+    r.o = p_lens + Vector3f(r.o.x, r.o.y, 0); // the orthographic origin offset stays
+    r.d = normalize(p_focus - r.o);
+    return r;
+}
+} // namespace
+
+PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, int width, int height, float fov_deg,
+                                     float lens_radius, float focal_distance, const Screen* screen)
+    : world_from_camera_(world_from_camera), lens_radius_(lens_radius), focal_distance_(focal_distance) {
+    Screen s = screen ? *screen : default_screen(width, height);
+    float tan_half = std::tan(fov_deg * kPi / 360.0f);
+    raster_to_screen(s, width, height, tan_half, &ax_, &bx_, &ay_, &by_);
+}
+
+Ray PerspectiveCamera::generate_ray(Point2f p, Point2f u_lens) const {
+    Vector3f dir = normalize(Vector3f{ax_ + bx_ * p.x, ay_ + by_ * p.y, 1});
+    Ray r = thin_lens({0, 0, 0}, dir, lens_radius_, focal_distance_, u_lens);
+    return {world_from_camera_(r.o), normalize(world_from_camera_(r.d)), kInfinity};
+}
+
+OrthographicCamera::OrthographicCamera(const Transform& world_from_camera, int width, int height, float lens_radius,
+                                       float focal_distance, const Screen* screen)
+    : world_from_camera_(world_from_camera), lens_radius_(lens_radius), focal_distance_(focal_distance) {
+    Screen s = screen ? *screen : PerspectiveCamera::default_screen(width, height);
+    raster_to_screen(s, width, height, 1.0f, &ax_, &bx_, &ay_, &by_);
+}
+
+Ray OrthographicCamera::generate_ray(Point2f p, Point2f u_lens) const {
+    Point3f o{ax_ + bx_ * p.x, ay_ + by_ * p.y, 0};
+    Ray r = thin_lens(o, {0, 0, 1}, lens_radius_, focal_distance_, u_lens);
+    return {world_from_camera_(r.o), normalize(world_from_camera_(r.d)), kInfinity};
+}
+
+} // namespace illum

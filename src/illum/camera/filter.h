@@ -1,0 +1,74 @@
+// Pixel reconstruction filters, sampled rather than splatted: each camera sample is offset from its
+// pixel's center with density proportional to |f| and weighted by f/pdf (1 for the positive filters
+// here), so a sample contributes to its own pixel only and the image is independent of tile order and
+// thread count (filter importance sampling; Ernst et al. 2006, as in pbrt-v4).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "illum/math/vector.h"
+
+namespace illum {
+
+struct FilterSample {
+    Vector2f offset; // from the pixel center, in pixels
+    float weight = 1;
+};
+
+class Filter {
+public:
+    explicit Filter(Vector2f radius) : radius_(radius) {}
+    virtual ~Filter() = default;
+    Vector2f radius() const { return radius_; }
+    virtual float evaluate(Vector2f p) const = 0;
+    virtual FilterSample sample(Point2f u) const = 0;
+
+protected:
+    Vector2f radius_;
+};
+
+class BoxFilter final : public Filter {
+public:
+    explicit BoxFilter(Vector2f radius = {0.5f, 0.5f}) : Filter(radius) {}
+    float evaluate(Vector2f p) const override {
+        return (std::abs(p.x) <= radius_.x && std::abs(p.y) <= radius_.y) ? 1.0f : 0.0f;
+    }
+    FilterSample sample(Point2f u) const override {
+        return {{(2 * u.x - 1) * radius_.x, (2 * u.y - 1) * radius_.y}, 1};
+    }
+};
+
+// The tent max(0, 1 - |x|/r) in each axis.
+class TriangleFilter final : public Filter {
+public:
+    explicit TriangleFilter(Vector2f radius = {2, 2}) : Filter(radius) {}
+    float evaluate(Vector2f p) const override {
+        return std::max(0.0f, radius_.x - std::abs(p.x)) * std::max(0.0f, radius_.y - std::abs(p.y));
+    }
+    FilterSample sample(Point2f u) const override { return {{sample_tent(u.x) * radius_.x, sample_tent(u.y) * radius_.y}, 1}; }
+    // Inverse CDF of the unit tent on [-1, 1].
+    static float sample_tent(float u) {
+        if (u < 0.5f) return -1 + std::sqrt(2 * u);
+        return 1 - std::sqrt(2 - 2 * u);
+    }
+};
+
+// pbrt-v4's Gaussian: g(x) - g(r) per axis, g(x) = exp(-x²/(2σ²)) / sqrt(2πσ²), zero beyond r.
+// Sampled exactly by inverting its CDF (Newton's method on the erf-based closed form).
+class GaussianFilter final : public Filter {
+public:
+    explicit GaussianFilter(Vector2f radius = {1.5f, 1.5f}, float sigma = 0.5f);
+    float evaluate(Vector2f p) const override;
+    FilterSample sample(Point2f u) const override;
+    float sigma() const { return sigma_; }
+
+private:
+    float sample_axis(float u, float r) const;
+    float sigma_;
+};
+
+// Makes a filter by pbrt-v4 name ("box", "triangle", "gaussian"); radius <= 0 takes the default.
+std::unique_ptr<Filter> make_filter(const std::string& name, Vector2f radius, float sigma = 0.5f);
+
+} // namespace illum

@@ -1,0 +1,65 @@
+// Ray traversal by Embree 3: triangle meshes (Embree triangles), spheres (Embree sphere points) and disks
+// (Embree user geometry). The accelerator owns the shapes and knows, per geometry, its material and the
+// area light of each primitive.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <embree3/rtcore.h>
+
+#include "illum/geometry/disk.h"
+#include "illum/geometry/sphere.h"
+#include "illum/geometry/surface_hit.h"
+#include "illum/geometry/triangle_mesh.h"
+
+namespace illum {
+
+class Accelerator {
+public:
+    Accelerator();
+    ~Accelerator();
+    Accelerator(const Accelerator&) = delete;
+    Accelerator& operator=(const Accelerator&) = delete;
+
+    // Each add returns the geometry id. `lights` has one entry per primitive (null where it does not
+    // emit) or is empty when no primitive emits.
+    std::uint32_t add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
+                           std::vector<const Light*> lights);
+    std::uint32_t add_sphere(std::unique_ptr<SphereShape> sphere, const Material* material, const Light* light);
+    std::uint32_t add_disk(std::unique_ptr<DiskShape> disk, const Material* material, const Light* light);
+    void commit();
+
+    // Closest hit along the ray within (0, ray.tmax).
+    bool intersect(const Ray& ray, SurfaceHit* hit) const;
+    // Whether anything blocks the ray within (0, ray.tmax).
+    bool occluded(const Ray& ray) const;
+
+    Bounds3f bounds() const { return bounds_; }
+    const TriangleMesh* mesh(std::uint32_t geom_id) const;
+    const SphereShape* sphere(std::uint32_t geom_id) const;
+    const DiskShape* disk(std::uint32_t geom_id) const;
+    std::size_t triangle_count() const;
+    std::size_t geometry_count() const { return records_.size(); }
+
+private:
+    enum class Kind : std::uint8_t { Mesh, Sphere, Disk };
+    struct Record {
+        Kind kind;
+        std::unique_ptr<TriangleMesh> mesh;
+        std::unique_ptr<SphereShape> sphere;
+        std::unique_ptr<DiskShape> disk;
+        const Material* material = nullptr;
+        std::vector<const Light*> lights;
+    };
+    std::uint32_t attach(RTCGeometry geom, Record record);
+
+    RTCDevice device_ = nullptr;
+    RTCScene scene_ = nullptr;
+    std::vector<Record> records_;
+    Bounds3f bounds_;
+};
+
+} // namespace illum

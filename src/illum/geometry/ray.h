@@ -1,0 +1,63 @@
+// Rays and robust ray origins. A hit point carries a conservative bound on its floating-point error;
+// new rays start just outside that error box along the normal, so they neither re-hit the surface they
+// leave nor pass through nearby geometry (Pharr, Jakob & Humphreys, PBR 4th ed., §6.8).
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include "illum/math/vector.h"
+
+namespace illum {
+
+inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// γ_n = n ε / (1 - n ε), the bound on the relative error of n floating-point operations (Higham 2002).
+constexpr float gamma_bound(int n) {
+    constexpr float eps = std::numeric_limits<float>::epsilon() * 0.5f;
+    return (n * eps) / (1 - n * eps);
+}
+
+struct Ray {
+    Point3f o;
+    Vector3f d;
+    float tmax = kInfinity;
+
+    Point3f operator()(float t) const { return o + d * t; }
+};
+
+inline float next_float_up(float v) { return std::nextafter(v, kInfinity); }
+inline float next_float_down(float v) { return std::nextafter(v, -kInfinity); }
+
+// Moves p off the surface with normal n, on the side of w, past its error bound p_error.
+inline Point3f offset_ray_origin(Point3f p, Vector3f p_error, Normal3f n, Vector3f w) {
+    float d = dot(abs(Vector3f(n)), p_error);
+    Vector3f offset = Vector3f(n) * d;
+    if (dot(w, n) < 0) offset = -offset;
+    Point3f po = p + offset;
+    for (int i = 0; i < 3; ++i) {
+        if (offset[i] > 0) po[i] = next_float_up(po[i]);
+        else if (offset[i] < 0) po[i] = next_float_down(po[i]);
+    }
+    return po;
+}
+
+// A ray leaving a surface point in direction d.
+inline Ray spawn_ray(Point3f p, Vector3f p_error, Normal3f n, Vector3f d) {
+    return {offset_ray_origin(p, p_error, n, d), d, kInfinity};
+}
+
+// A shadow ray from a surface point to a target point (its own offset already applied); tmax stops
+// just short of the target (d is unnormalised: t = 1 at the target).
+inline Ray spawn_ray_to(Point3f p, Vector3f p_error, Normal3f n, Point3f target) {
+    Point3f o = offset_ray_origin(p, p_error, n, target - p);
+    return {o, target - o, 1 - 1e-4f};
+}
+
+inline Ray spawn_ray_to(Point3f p, Vector3f p_error, Normal3f n, Point3f q, Vector3f q_error, Normal3f nq) {
+    Point3f pf = offset_ray_origin(p, p_error, n, q - p);
+    Point3f pt = offset_ray_origin(q, q_error, nq, pf - q);
+    return {pf, pt - pf, 1 - 1e-4f};
+}
+
+} // namespace illum

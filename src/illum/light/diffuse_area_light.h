@@ -1,0 +1,33 @@
+// A diffuse (Lambertian) area emitter of uniform radiance L on any AreaShape, one- or two-sided.
+#pragma once
+
+#include "illum/geometry/shape.h"
+#include "illum/light/light.h"
+
+namespace illum {
+
+class DiffuseAreaLight final : public Light {
+public:
+    DiffuseAreaLight(const AreaShape* shape, Radiance3 radiance, bool two_sided)
+        : Light(LightType::Area), shape_(shape), radiance_(radiance), two_sided_(two_sided) {}
+
+    std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f u) const override;
+    SolidAnglePdf pdf_li(const LightSampleContext& ctx, Vector3f wi, const SurfaceHit* hit) const override;
+    Radiance3 radiance(const SurfaceHit& hit, Vector3f w) const override { return emitted(hit.n, w); }
+    // Φ = π A L for a one-sided Lambertian emitter, twice that for a two-sided one.
+    Power3 power() const override;
+
+    Radiance3 emitted(Normal3f n, Vector3f w) const {
+        if (!two_sided_ && dot(n, w) <= 0) return {};
+        return radiance_;
+    }
+    const AreaShape* shape() const { return shape_; }
+    bool two_sided() const { return two_sided_; }
+
+private:
+    const AreaShape* shape_;
+    Radiance3 radiance_;
+    bool two_sided_;
+};
+
+} // namespace illum

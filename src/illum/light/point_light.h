@@ -1,0 +1,32 @@
+// An isotropic point source of intensity I [W/sr]: it delivers biradiance I / r² (total power 4π I).
+#pragma once
+
+#include "illum/light/light.h"
+
+namespace illum {
+
+class PointLight final : public Light {
+public:
+    PointLight(Point3f position, Intensity3 intensity)
+        : Light(LightType::DeltaPosition), position_(position), intensity_(intensity) {}
+
+    std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f) const override {
+        Vector3f d = position_ - ctx.p;
+        float d2 = length_squared(d);
+        if (d2 == 0) return std::nullopt;
+        return LightLiSample{d / std::sqrt(d2), {}, biradiance(intensity_, d2), SolidAnglePdf(1), position_, {}, {},
+                             false};
+    }
+    SolidAnglePdf pdf_li(const LightSampleContext&, Vector3f, const SurfaceHit*) const override {
+        return SolidAnglePdf(0);
+    }
+    Power3 power() const override { return Power3(intensity_.rgb * (4 * kPi)); }
+    Point3f position() const { return position_; }
+    Intensity3 intensity() const { return intensity_; }
+
+private:
+    Point3f position_;
+    Intensity3 intensity_;
+};
+
+} // namespace illum

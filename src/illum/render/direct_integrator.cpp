@@ -1,0 +1,78 @@
+#include "illum/render/direct_integrator.h"
+
+namespace illum {
+
+Radiance3 DirectIntegrator::reflected_from(const Light& light, const SurfaceHit& hit, const BSDF& bsdf,
+                                           ThreadContext& tc) const {
+    Radiance3 l;
+    LightSampleContext ctx(hit);
+    Point2f u_light = tc.sampler.get_2d();
+    float u_lobe = tc.sampler.get_1d();
+    Point2f u_bsdf = tc.sampler.get_2d();
+
+    // Light sampling.
+    if (auto ls = light.sample_li(ctx, u_light)) {
+        Bsdf3 f = bsdf.f(hit.wo, ls->wi);
+        float cos_i = abs_dot(ls->wi, hit.ns);
+        if (!f.is_black() && cos_i > 0 && unoccluded(hit, *ls, tc)) {
+            Radiance3 contrib = reflected(f, ls->biradiance, cos_i);
+            if (is_delta(light.type())) return contrib; // exact: no integral, no BSDF sample
+            l += contrib * power_heuristic(ls->pdf.value, bsdf.pdf(hit.wo, ls->wi).value);
+        }
+    }
+    if (is_delta(light.type())) return l;
+
+    // BSDF sampling: does the sampled direction reach this light?
+    auto bs = bsdf.sample(hit.wo, u_lobe, u_bsdf);
+    if (!bs || bs->is_specular()) return l;
+    Ray ray = hit.spawn_ray(bs->wi);
+    SurfaceHit lhit;
+    Radiance3 le;
+    float p_light = 0;
+    if (intersect(ray, &lhit, tc)) {
+        if (lhit.area_light != &light) return l;
+        le = light.radiance(lhit, lhit.wo);
+        p_light = light.pdf_li(ctx, bs->wi, &lhit).value;
+    } else if (light.type() == LightType::Infinite) {
+        le = light.le(ray);
+        p_light = light.pdf_li(ctx, bs->wi, nullptr).value;
+    }
+    if (le.is_black()) return l;
+    float w = bs->pdf_is_proportional ? 1.0f : power_heuristic(bs->pdf.value, p_light);
+    l += le * (bs->weight() * w);
+    return l;
+}
+
+Radiance3 DirectIntegrator::radiance(Ray ray, ThreadContext& tc) const {
+    Radiance3 l;
+    Color3 beta(1.0f);
+    for (int depth = 0;;) {
+        SurfaceHit hit;
+        if (!intersect(ray, &hit, tc)) {
+            for (const Light* env : scene_.infinite_lights) l += env->le(ray) * beta;
+            break;
+        }
+        if (hit.area_light) l += hit.area_light->radiance(hit, hit.wo) * beta;
+        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.arena) : BSDF();
+        if (!bsdf) {
+            ray = hit.spawn_ray(ray.d);
+            continue;
+        }
+        if (bsdf.flags() == kNone) break;
+        if (bsdf.is_non_specular()) {
+            Radiance3 direct;
+            for (const auto& light : scene_.lights) direct += reflected_from(*light, hit, bsdf, tc);
+            l += direct * beta;
+            break;
+        }
+        // A specular surface: follow the reflection/refraction.
+        if (max_depth_ >= 0 && depth++ >= max_depth_) break;
+        auto bs = bsdf.sample(hit.wo, tc.sampler.get_1d(), tc.sampler.get_2d());
+        if (!bs) break;
+        beta *= bs->weight();
+        ray = hit.spawn_ray(bs->wi);
+    }
+    return l;
+}
+
+} // namespace illum

@@ -1,0 +1,26 @@
+#include "illum/render/integrator.h"
+
+#include "illum/light/light.h"
+#include "illum/render/aov_integrator.h"
+#include "illum/render/direct_integrator.h"
+#include "illum/render/path_integrator.h"
+
+namespace illum {
+
+bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, ThreadContext& tc) const {
+    Ray shadow = ls.at_infinity ? hit.spawn_ray(ls.wi)
+                 : (ls.n_light == Normal3f{} ? hit.spawn_ray_to(ls.p_light)
+                                              : spawn_ray_to(hit.p, hit.p_error, hit.n, ls.p_light,
+                                                             ls.p_light_error, ls.n_light));
+    return !occluded(shadow, tc);
+}
+
+std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene& scene, int max_depth) {
+    if (name == "path") return std::make_unique<PathIntegrator>(scene, max_depth);
+    if (name == "direct") return std::make_unique<DirectIntegrator>(scene, max_depth);
+    if (name == "albedo") return std::make_unique<AovIntegrator>(scene, AovIntegrator::Pass::Albedo);
+    if (name == "normal") return std::make_unique<AovIntegrator>(scene, AovIntegrator::Pass::Normal);
+    throw Error("unknown integrator \"" + name + "\" (use path, direct, albedo or normal)");
+}
+
+} // namespace illum

@@ -1,0 +1,59 @@
+// Integrators estimate the value of one camera sample: radiance for the physical ones, a surface
+// quantity for the debug passes. They read the scene and write nothing shared; per-thread state
+// (sampler, scratch arena, ray counter) comes in a ThreadContext.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "illum/geometry/ray.h"
+#include "illum/radiometry/quantity.h"
+#include "illum/render/sampler.h"
+#include "illum/scene/scene.h"
+#include "illum/util/arena.h"
+
+namespace illum {
+
+struct ThreadContext {
+    Sampler sampler;
+    ScratchArena arena;
+    std::uint64_t rays = 0; // rays traced (closest hit and shadow)
+
+    explicit ThreadContext(const Sampler& s) : sampler(s) {}
+};
+
+class Integrator {
+public:
+    explicit Integrator(const Scene& scene) : scene_(scene) {}
+    virtual ~Integrator() = default;
+    // The value the film records for this camera ray (radiance in W m^-2 sr^-1 for physical integrators).
+    virtual Color3 estimate(const Ray& camera_ray, ThreadContext& tc) const = 0;
+
+protected:
+    bool intersect(const Ray& ray, SurfaceHit* hit, ThreadContext& tc) const {
+        ++tc.rays;
+        return scene_.intersect(ray, hit);
+    }
+    bool occluded(const Ray& ray, ThreadContext& tc) const {
+        ++tc.rays;
+        return scene_.occluded(ray);
+    }
+    // Whether the light sample ls is visible from hit.
+    bool unoccluded(const SurfaceHit& hit, const struct LightLiSample& ls, ThreadContext& tc) const;
+
+    const Scene& scene_;
+};
+
+// The power heuristic with β = 2 (Veach 1997, §9.2.4): w_a = p_a² / (p_a² + p_b²), for one sample from
+// each strategy.
+inline float power_heuristic(float pdf_a, float pdf_b) {
+    float a = pdf_a * pdf_a, b = pdf_b * pdf_b;
+    if (std::isinf(a)) return 1;
+    return a + b > 0 ? a / (a + b) : 0.0f;
+}
+
+// Integrator by name: "path", "direct", "albedo", "normal". Throws illum::Error for another name.
+std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene& scene, int max_depth);
+
+} // namespace illum

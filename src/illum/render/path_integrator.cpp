@@ -1,0 +1,105 @@
+#include "illum/render/path_integrator.h"
+
+#include "illum/light/light.h"
+
+namespace illum {
+
+Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
+    Radiance3 l;
+    Color3 beta(1.0f);      // path throughput
+    float eta_scale = 1;    // radiance scaling by refraction, undone for Russian roulette
+    bool specular_bounce = false;
+    float prev_bsdf_pdf = 0; // solid-angle pdf of the BSDF sample that made `ray`
+    LightSampleContext prev_ctx;
+    Sampler& sampler = tc.sampler;
+
+    for (int depth = 0;; ) {
+        SurfaceHit hit;
+        if (!intersect(ray, &hit, tc)) {
+            for (const Light* env : scene_.infinite_lights) {
+                Radiance3 le = env->le(ray);
+                if (le.is_black()) continue;
+                if (depth == 0 || specular_bounce) {
+                    l += le * beta;
+                } else {
+                    float p_light = scene_.light_sampler.pmf(env) * env->pdf_li(prev_ctx, ray.d, nullptr).value;
+                    l += le * beta * power_heuristic(prev_bsdf_pdf, p_light);
+                }
+            }
+            break;
+        }
+
+        if (hit.area_light) {
+            Radiance3 le = hit.area_light->radiance(hit, hit.wo);
+            if (!le.is_black()) {
+                if (depth == 0 || specular_bounce) {
+                    l += le * beta;
+                } else {
+                    float p_light = scene_.light_sampler.pmf(hit.area_light) *
+                                    hit.area_light->pdf_li(prev_ctx, ray.d, &hit).value;
+                    l += le * beta * power_heuristic(prev_bsdf_pdf, p_light);
+                }
+            }
+        }
+
+        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.arena) : BSDF();
+        if (!bsdf) {
+            // A pure interface (no material): the path continues straight through, no scattering event.
+            ray = hit.spawn_ray(ray.d);
+            continue;
+        }
+        if (bsdf.flags() == kNone) break; // a black surface scatters nothing
+        if (max_depth_ >= 0 && depth++ >= max_depth_) break;
+
+        Vector3f wo = hit.wo;
+        LightSampleContext ctx(hit);
+
+        // Next-event estimation: one light picked by power.
+        float u_light = sampler.get_1d();
+        Point2f u_li = sampler.get_2d();
+        if (bsdf.is_non_specular()) {
+            float pmf = 0;
+            if (const Light* light = scene_.light_sampler.sample(u_light, &pmf); light && pmf > 0) {
+                if (auto ls = light->sample_li(ctx, u_li)) {
+                    Bsdf3 f = bsdf.f(wo, ls->wi);
+                    float cos_i = abs_dot(ls->wi, hit.ns);
+                    if (!f.is_black() && cos_i > 0 && unoccluded(hit, *ls, tc)) {
+                        Radiance3 contrib = reflected(f, ls->biradiance, cos_i) * beta;
+                        if (is_delta(light->type())) {
+                            l += contrib / pmf;
+                        } else {
+                            float p_bsdf = bsdf.pdf(wo, ls->wi).value;
+                            l += contrib * (power_heuristic(pmf * ls->pdf.value, p_bsdf) / pmf);
+                        }
+                    }
+                }
+            }
+        }
+
+        // Continue the path by sampling the BSDF.
+        float u_lobe = sampler.get_1d();
+        Point2f u_dir = sampler.get_2d();
+        auto bs = bsdf.sample(wo, u_lobe, u_dir);
+        if (!bs) break;
+        beta *= bs->f.rgb * (abs_dot(bs->wi, hit.ns) / bs->pdf.value);
+        specular_bounce = bs->is_specular();
+        prev_bsdf_pdf = bs->pdf_is_proportional ? 0.0f : bs->pdf.value;
+        if (bs->pdf_is_proportional) specular_bounce = false;
+        if (bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
+        prev_ctx = ctx;
+        ray = hit.spawn_ray(bs->wi);
+
+        if (!beta.is_finite() || beta.is_black()) break;
+        // Russian roulette after the first bounces: continue with probability min(1, max β·η²).
+        float u_rr = sampler.get_1d();
+        float rr_beta = beta.max_component() * eta_scale;
+        if (rr_beta < 1 && depth > 1) {
+            float q = std::max(0.0f, 1 - rr_beta);
+            if (u_rr < q) break;
+            beta /= 1 - q;
+        }
+    }
+    return l;
+}
+
+} // namespace illum

@@ -1,0 +1,103 @@
+#include "illum/render/renderer.h"
+
+#include <atomic>
+#include <chrono>
+#include <oneapi/tbb/enumerable_thread_specific.h>
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
+#include <thread>
+
+#include "illum/camera/film.h"
+#include "illum/render/progress.h"
+
+namespace illum {
+
+namespace {
+
+struct Tile {
+    int x0, y0, x1, y1;
+};
+
+std::vector<Tile> make_tiles(int w, int h, int size) {
+    std::vector<Tile> tiles;
+    for (int y = 0; y < h; y += size)
+        for (int x = 0; x < w; x += size) tiles.push_back({x, y, std::min(x + size, w), std::min(y + size, h)});
+    return tiles;
+}
+
+} // namespace
+
+RenderResult render(const Scene& scene, const Integrator& integrator, const RenderOptions& options) {
+    if (options.spp <= 0 && options.time_budget <= 0) throw Error("samples per pixel must be positive");
+    const int w = scene.width, h = scene.height;
+    int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    tbb::task_arena arena(threads);
+
+    Film film(w, h);
+    std::vector<Tile> tiles = make_tiles(w, h, options.tile_size);
+    auto kind = parse_sampler_kind(options.sampler);
+    if (!kind) throw Error("unknown sampler \"" + options.sampler + "\" (use sobol or independent)");
+    Sampler prototype(*kind, options.spp > 0 ? options.spp : 1, options.seed);
+    tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });
+    std::atomic<std::uint64_t> nonfinite{0};
+
+    const bool timed = options.time_budget > 0;
+    std::uint64_t pixels = std::uint64_t(w) * h;
+    Progress progress("render", timed ? 0 : pixels * std::uint64_t(options.spp), "samples", options.quiet);
+
+    // Renders samples [s0, s1) of every pixel.
+    auto pass = [&](int s0, int s1) {
+        arena.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1), [&](const auto& range) {
+                ThreadContext& tc = contexts.local();
+                for (std::size_t ti = range.begin(); ti != range.end(); ++ti) {
+                    const Tile& t = tiles[ti];
+                    for (int y = t.y0; y < t.y1; ++y)
+                        for (int x = t.x0; x < t.x1; ++x)
+                            for (int s = s0; s < s1; ++s) {
+                                tc.sampler.start_pixel_sample({x, y}, s);
+                                FilterSample fs = scene.filter->sample(tc.sampler.get_pixel_2d());
+                                Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
+                                Ray ray = scene.camera->generate_ray(p_film, tc.sampler.get_2d());
+                                Color3 v = integrator.estimate(ray, tc);
+                                tc.arena.reset();
+                                if (!v.is_finite() || v.has_negative()) {
+                                    ++nonfinite;
+                                    v = Color3(0.0f);
+                                }
+                                film.add_sample(x, y, v, fs.weight);
+                            }
+                    progress.add(std::uint64_t(t.x1 - t.x0) * (t.y1 - t.y0) * (s1 - s0));
+                }
+            });
+        });
+    };
+
+    int spp = 0;
+    if (timed) {
+        // Whole passes of one sample per pixel until the budget is spent.
+        do {
+            pass(spp, spp + 1);
+            ++spp;
+            progress.set_fraction(progress.elapsed_seconds() / options.time_budget);
+        } while (progress.elapsed_seconds() < options.time_budget);
+    } else {
+        pass(0, options.spp);
+        spp = options.spp;
+    }
+    progress.finish();
+
+    RenderResult r;
+    r.seconds = progress.elapsed_seconds();
+    r.image = film.resolve();
+    r.spp = spp;
+    r.samples = pixels * std::uint64_t(spp);
+    for (auto& tc : contexts) r.rays += tc.rays;
+    r.nonfinite_samples = nonfinite;
+    r.threads = threads;
+    return r;
+}
+
+} // namespace illum

@@ -1,0 +1,37 @@
+// The tiled parallel render loop on oneTBB. Pixels are split into tiles; each pixel is rendered by one
+// task with its own deterministic sampler state (seed, pixel, sample index), so the image does not
+// depend on the thread count or the order tiles run in.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "illum/image/image.h"
+#include "illum/render/integrator.h"
+#include "illum/scene/scene.h"
+
+namespace illum {
+
+struct RenderOptions {
+    int spp = 16;
+    double time_budget = 0; // seconds; > 0 renders whole passes of 1 spp until the budget is spent
+    int threads = 0;        // 0: all hardware threads
+    std::uint64_t seed = 0;
+    std::string sampler = "sobol";
+    bool quiet = false;
+    int tile_size = 16;
+};
+
+struct RenderResult {
+    Image image;
+    double seconds = 0;
+    int spp = 0; // samples per pixel actually taken
+    std::uint64_t samples = 0;
+    std::uint64_t rays = 0;
+    std::uint64_t nonfinite_samples = 0; // NaN/Inf/negative estimates, dropped (counted, never written)
+    int threads = 0;
+};
+
+RenderResult render(const Scene& scene, const Integrator& integrator, const RenderOptions& options);
+
+} // namespace illum

@@ -1,0 +1,18 @@
+#include "illum/scene/scene.h"
+
+namespace illum {
+
+void Scene::finalize() {
+    accelerator.commit();
+    std::vector<const Light*> all;
+    infinite_lights.clear();
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        lights[i]->index = std::uint32_t(i);
+        lights[i]->preprocess(accelerator.bounds());
+        all.push_back(lights[i].get());
+        if (lights[i]->type() == LightType::Infinite) infinite_lights.push_back(lights[i].get());
+    }
+    light_sampler = PowerLightSampler(all);
+}
+
+} // namespace illum

@@ -1,0 +1,54 @@
+// The runtime scene: Embree geometry, lights, materials, camera and film settings, built once from a
+// SceneDesc. The render loop only reads it.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "illum/bsdf/material.h"
+#include "illum/camera/camera.h"
+#include "illum/camera/filter.h"
+#include "illum/geometry/accelerator.h"
+#include "illum/light/light.h"
+#include "illum/light/light_sampler.h"
+#include "illum/texture/texture.h"
+
+namespace illum {
+
+// What the scene file asks of the render; the command line may override each.
+struct RenderRequest {
+    std::string integrator = "path";
+    int max_depth = 5;
+    std::string sampler = "sobol";
+    int spp = 16;
+    std::string output; // the film's filename, "" when none
+};
+
+class Scene {
+public:
+    Accelerator accelerator;
+    std::vector<std::unique_ptr<Light>> lights;
+    std::vector<const Light*> infinite_lights;
+    PowerLightSampler light_sampler;
+    std::unique_ptr<Camera> camera;
+    std::unique_ptr<Filter> filter;
+    int width = 0, height = 0;
+    RenderRequest request;
+    std::vector<std::string> warnings;
+
+    // Storage that the above points into.
+    std::vector<std::unique_ptr<Material>> materials;
+    std::vector<std::unique_ptr<ColorTexture>> color_textures;
+    std::vector<std::unique_ptr<FloatTexture>> float_textures;
+    std::vector<std::unique_ptr<AreaShape>> light_shapes;
+
+    bool intersect(const Ray& ray, SurfaceHit* hit) const { return accelerator.intersect(ray, hit); }
+    bool occluded(const Ray& ray) const { return accelerator.occluded(ray); }
+
+    // Registers the lights with the light sampler and lets them see the scene bounds; call once after
+    // all geometry and lights are added.
+    void finalize();
+};
+
+} // namespace illum

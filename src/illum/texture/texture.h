@@ -1,0 +1,56 @@
+// Textures give a material parameter at a surface point. Constant and checkerboard here; image textures
+// come with the image module.
+#pragma once
+
+#include "illum/geometry/surface_hit.h"
+#include "illum/radiometry/color.h"
+
+namespace illum {
+
+class ColorTexture {
+public:
+    virtual ~ColorTexture() = default;
+    virtual Color3 evaluate(const SurfaceHit& hit) const = 0;
+};
+
+class FloatTexture {
+public:
+    virtual ~FloatTexture() = default;
+    virtual float evaluate(const SurfaceHit& hit) const = 0;
+};
+
+class ConstantColorTexture final : public ColorTexture {
+public:
+    explicit ConstantColorTexture(Color3 c) : value_(c) {}
+    Color3 evaluate(const SurfaceHit&) const override { return value_; }
+    Color3 value() const { return value_; }
+
+private:
+    Color3 value_;
+};
+
+class ConstantFloatTexture final : public FloatTexture {
+public:
+    explicit ConstantFloatTexture(float v) : value_(v) {}
+    float evaluate(const SurfaceHit&) const override { return value_; }
+
+private:
+    float value_;
+};
+
+// A 2D checkerboard in uv scaled by (su, sv): tex1 where floor(su u) + floor(sv v) is even.
+class CheckerboardColorTexture final : public ColorTexture {
+public:
+    CheckerboardColorTexture(const ColorTexture* a, const ColorTexture* b, float su, float sv)
+        : a_(a), b_(b), su_(su), sv_(sv) {}
+    Color3 evaluate(const SurfaceHit& hit) const override {
+        int parity = int(std::floor(hit.uv.x * su_) + std::floor(hit.uv.y * sv_)) & 1;
+        return parity == 0 ? a_->evaluate(hit) : b_->evaluate(hit);
+    }
+
+private:
+    const ColorTexture *a_, *b_;
+    float su_, sv_;
+};
+
+} // namespace illum
