@@ -1,0 +1,108 @@
+#include "illum/image/metrics.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "illum/util/error.h"
+
+namespace illum {
+
+namespace {
+
+void require_same_size(const Image& a, const Image& b, const char* what) {
+    if (a.width() != b.width() || a.height() != b.height())
+        throw Error(std::string(what) + ": image sizes differ (" + std::to_string(a.width()) + "x" +
+                    std::to_string(a.height()) + " vs " + std::to_string(b.width()) + "x" +
+                    std::to_string(b.height()) + ")");
+}
+
+// Mean over all pixels of term(a_c, b_c) for each channel c.
+template <class Term>
+ErrorStats mean_of(const Image& a, const Image& b, const char* what, Term term) {
+    require_same_size(a, b, what);
+    ErrorStats s;
+    const std::size_t n = a.pixel_count();
+    if (n == 0) return s;
+    std::array<double, 3> sum{0, 0, 0};
+    const Color3* pa = a.data();
+    const Color3* pb = b.data();
+    for (std::size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) sum[c] += term(double(pa[i][c]), double(pb[i][c]));
+    for (int c = 0; c < 3; ++c) s.channel[c] = sum[c] / double(n);
+    s.overall = (sum[0] + sum[1] + sum[2]) / (3.0 * double(n));
+    return s;
+}
+
+} // namespace
+
+ErrorStats mse(const Image& a, const Image& reference) {
+    return mean_of(a, reference, "mse", [](double x, double y) { return (x - y) * (x - y); });
+}
+
+ErrorStats rmse(const Image& a, const Image& reference) {
+    ErrorStats s = mse(a, reference);
+    for (double& c : s.channel) c = std::sqrt(c);
+    s.overall = std::sqrt(s.overall);
+    return s;
+}
+
+ErrorStats rel_mse(const Image& a, const Image& reference, double eps) {
+    return mean_of(a, reference, "relmse",
+                   [eps](double x, double y) { return (x - y) * (x - y) / (y * y + eps); });
+}
+
+ErrorStats mean_relative_error(const Image& a, const Image& reference, double eps) {
+    return mean_of(a, reference, "mean relative error",
+                   [eps](double x, double y) { return std::abs(x - y) / (std::abs(y) + eps); });
+}
+
+ErrorStats channel_means(const Image& image) {
+    ErrorStats s;
+    const std::size_t n = image.pixel_count();
+    if (n == 0) return s;
+    std::array<double, 3> sum{0, 0, 0};
+    const Color3* p = image.data();
+    for (std::size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) sum[c] += p[i][c];
+    for (int c = 0; c < 3; ++c) s.channel[c] = sum[c] / double(n);
+    s.overall = (s.channel[0] + s.channel[1] + s.channel[2]) / 3.0;
+    return s;
+}
+
+ErrorStats relative_mean_difference(const Image& a, const Image& reference) {
+    const ErrorStats ma = channel_means(a), mb = channel_means(reference);
+    auto rel = [](double x, double y) {
+        if (y != 0) return (x - y) / y;
+        if (x == 0) return 0.0;
+        return std::copysign(std::numeric_limits<double>::infinity(), x);
+    };
+    ErrorStats s;
+    for (int c = 0; c < 3; ++c) s.channel[c] = rel(ma.channel[c], mb.channel[c]);
+    s.overall = rel(ma.overall, mb.overall);
+    return s;
+}
+
+Image downsample(const Image& image, int factor) {
+    if (factor < 1) throw Error("downsample: factor must be at least 1, got " + std::to_string(factor));
+    if (image.width() % factor != 0 || image.height() % factor != 0)
+        throw Error("downsample: " + std::to_string(image.width()) + "x" + std::to_string(image.height()) +
+                    " is not a multiple of " + std::to_string(factor));
+    Image out(image.width() / factor, image.height() / factor);
+    const double inv_area = 1.0 / (double(factor) * double(factor));
+    for (int y = 0; y < out.height(); ++y)
+        for (int x = 0; x < out.width(); ++x) {
+            double sum[3] = {0, 0, 0};
+            for (int j = 0; j < factor; ++j)
+                for (int i = 0; i < factor; ++i) {
+                    const Color3& p = image(x * factor + i, y * factor + j);
+                    sum[0] += p.r;
+                    sum[1] += p.g;
+                    sum[2] += p.b;
+                }
+            out(x, y) = {float(sum[0] * inv_area), float(sum[1] * inv_area), float(sum[2] * inv_area)};
+        }
+    return out;
+}
+
+} // namespace illum

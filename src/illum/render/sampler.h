@@ -1,0 +1,145 @@
+// Deterministic per-pixel samplers (DESIGN.md §3): the numbers of a pixel sample depend only on
+// (seed, pixel, sample index, dimension), never on which thread renders the pixel or in which order, so an
+// image is reproducible for any thread count and tile order.
+//
+// Dimensions: start_pixel_sample() resets the dimension counter. get_pixel_2d() always returns dimension 0
+// (the film-plane offset), wherever it is called; each get_1d() / get_2d() call then takes the next
+// dimension (1, 2, ...), one per call whether 1D or 2D.
+//
+// Kinds:
+//  - independent: a PCG32 stream seeded by hash(seed, pixel, sample index).
+//  - sobol: padded, Owen-scrambled Sobol after B. Burley, "Practical Hash-based Owen Scrambling", JCGT 9(4)
+//    2020. Every dimension (1D) or dimension pair (2D) uses the first one or two Sobol dimensions with the
+//    sample index shuffled by a nested uniform (Owen) scramble seeded by hash(seed, pixel, dimension), and
+//    each output coordinate Owen-scrambled with its own hashed seed. The index shuffle maps the first 2^k
+//    indices onto one aligned block of 2^k Sobol points, so for every k the first 2^k samples of a pixel
+//    are stratified (a (0, k, 2)-net in 2D), and dimensions are decorrelated from each other.
+//
+// Nothing is allocated per sample; a Sampler is a small value to copy into each thread.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "illum/math/rng.h"
+#include "illum/math/vector.h"
+
+namespace illum {
+
+enum class SamplerKind : uint8_t { independent, sobol };
+
+std::string_view sampler_kind_name(SamplerKind kind);
+// "independent" / "random" or "sobol" / "zsobol" / "owen-sobol"; nullopt otherwise.
+std::optional<SamplerKind> parse_sampler_kind(std::string_view name);
+
+namespace sampling_detail {
+
+inline uint32_t reverse_bits(uint32_t v) {
+    v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
+    v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
+    v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
+    v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
+    return (v >> 16) | (v << 16);
+}
+
+// Sobol dimension 0: the van der Corput radical inverse in base 2, as a 32-bit fraction.
+inline uint32_t sobol_dim0(uint32_t index) { return reverse_bits(index); }
+// Sobol dimension 1: XOR of the direction numbers v_i for the set bits i of index, with v_0 = 2^31 and
+// v_i = v_{i-1} ^ (v_{i-1} >> 1). Defined out of line with byte-wise tables.
+uint32_t sobol_dim1(uint32_t index);
+
+// The Laine-Karras hash (S. Laine, T. Karras, "Stratified Sampling for Stochastic Transparency", EGSR 2011)
+// with the constants Burley 2020 found to give better-mixed permutations. Each output bit depends only on
+// the same and lower input bits, so applied to a bit-reversed fraction it is a nested uniform scramble.
+inline uint32_t laine_karras_permutation(uint32_t x, uint32_t seed) {
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return x;
+}
+
+// Owen scramble of a 32-bit fraction (or, for index shuffling, of a 32-bit index seen as a fraction).
+inline uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
+    return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
+}
+
+// A 32-bit fraction to float in [0, 1): the top 24 bits times 2^-24 (rounding could otherwise give 1).
+inline float bits_to_unit_float(uint32_t x) { return float(x >> 8) * 0x1p-24f; }
+
+} // namespace sampling_detail
+
+class Sampler {
+public:
+    Sampler(SamplerKind kind, int samples_per_pixel, uint64_t seed = 0)
+        : kind_(kind), spp_(samples_per_pixel), seed_(seed) {}
+
+    SamplerKind kind() const { return kind_; }
+    int samples_per_pixel() const { return spp_; }
+    uint64_t seed() const { return seed_; }
+
+    void start_pixel_sample(Point2i pixel, int sample_index) {
+        index_ = uint32_t(sample_index);
+        dimension_ = 1;
+        if (kind_ == SamplerKind::independent) {
+            uint64_t h = hash(seed_, pixel.x, pixel.y, sample_index);
+            rng_.set_sequence(h, mix_bits(h));
+            pixel_rng_ = rng_;
+            rng_.advance(2); // the first two numbers belong to get_pixel_2d()
+        } else {
+            pixel_hash_ = hash(seed_, pixel.x, pixel.y);
+        }
+    }
+
+    float get_1d() {
+        if (kind_ == SamplerKind::independent) return rng_.uniform_float();
+        return sobol_1d(dimension_++);
+    }
+
+    Point2f get_2d() {
+        if (kind_ == SamplerKind::independent) {
+            float x = rng_.uniform_float();
+            return {x, rng_.uniform_float()};
+        }
+        return sobol_2d(dimension_++);
+    }
+
+    Point2f get_pixel_2d() {
+        if (kind_ == SamplerKind::independent) {
+            PCG32 r = pixel_rng_;
+            float x = r.uniform_float();
+            return {x, r.uniform_float()};
+        }
+        return sobol_2d(0);
+    }
+
+private:
+    float sobol_1d(uint32_t dim) const {
+        using namespace sampling_detail;
+        uint64_t h = hash(pixel_hash_, dim);
+        uint32_t i = nested_uniform_scramble(index_, uint32_t(h));
+        // sobol_dim0(i) = reverse_bits(i), so the scrambled value reverse(LK(reverse(reverse(i)))) needs only
+        // one reversal.
+        return bits_to_unit_float(reverse_bits(laine_karras_permutation(i, uint32_t(h >> 32))));
+    }
+
+    Point2f sobol_2d(uint32_t dim) const {
+        using namespace sampling_detail;
+        uint64_t h = hash(pixel_hash_, dim), h2 = mix_bits(h);
+        uint32_t i = nested_uniform_scramble(index_, uint32_t(h));
+        uint32_t x = reverse_bits(laine_karras_permutation(i, uint32_t(h >> 32)));
+        uint32_t y = nested_uniform_scramble(sobol_dim1(i), uint32_t(h2));
+        return {bits_to_unit_float(x), bits_to_unit_float(y)};
+    }
+
+    SamplerKind kind_;
+    int spp_;
+    uint64_t seed_;
+    uint32_t index_ = 0, dimension_ = 1;
+    uint64_t pixel_hash_ = 0;
+    PCG32 rng_, pixel_rng_;
+};
+
+} // namespace illum
