@@ -171,6 +171,17 @@ bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
     return true;
 }
 
+float Accelerator::intersect_distance(const Ray& ray) const {
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    RTCRayHit rh;
+    rh.ray = to_embree(ray);
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene_, &ctx, &rh);
+    return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
+}
+
 bool Accelerator::occluded(const Ray& ray) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);

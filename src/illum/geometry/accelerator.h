@@ -34,6 +34,9 @@ public:
 
     // Closest hit along the ray within (0, ray.tmax).
     bool intersect(const Ray& ray, SurfaceHit* hit) const;
+    // Closest-hit traversal only, without computing the hit's surface data (for measuring Embree's own
+    // ray rate); returns the hit distance or infinity.
+    float intersect_distance(const Ray& ray) const;
     // Whether anything blocks the ray within (0, ray.tmax).
     bool occluded(const Ray& ray) const;
 

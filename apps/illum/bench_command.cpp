@@ -1,0 +1,94 @@
+// `illum bench`: on the built-in Cornell box, the raw Embree closest-hit rate for incoherent rays, the
+// path tracer's rays/s and samples/s at the same thread count, and their ratio.
+#include <fmt/core.h>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "commands.h"
+#include "illum/render/ray_benchmark.h"
+#include "illum/render/renderer.h"
+#include "illum/scene/build.h"
+#include "illum/scene/builtin/builtin.h"
+#include "scene_loading.h"
+
+namespace illum::cli {
+
+namespace {
+
+struct BenchArgs {
+    std::string scene;
+    int threads = 0;
+    int spp = 16;
+    std::string resolution = "512x512";
+    std::uint64_t rays = 4'000'000;
+    bool json = false;
+};
+
+void run(const BenchArgs& args) {
+    SceneDesc desc = load_scene_desc(args.scene);
+    int w = 0, h = 0;
+    if (std::sscanf(args.resolution.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0)
+        throw Error(fmt::format("--resolution \"{}\" is not WIDTHxHEIGHT", args.resolution));
+    for (auto [name, v] : {std::pair{"xresolution", w}, std::pair{"yresolution", h}}) {
+        Param p;
+        p.type = ParamType::Integer;
+        p.name = name;
+        p.numbers = {double(v)};
+        desc.film.params.add(p);
+    }
+    auto scene = build_scene(desc);
+    int threads = args.threads > 0 ? args.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+
+    // Warm up Embree's caches and the thread pool, then measure.
+    measure_incoherent_rays(*scene, args.rays / 10, threads);
+    RayRate raw = measure_incoherent_rays(*scene, args.rays, threads);
+
+    auto integrator = make_integrator("path", *scene, scene->request.max_depth);
+    RenderOptions opt;
+    opt.spp = args.spp;
+    opt.threads = threads;
+    opt.quiet = true;
+    RenderResult r = render(*scene, *integrator, opt);
+    double path_rays = r.rays / r.seconds, samples = r.samples / r.seconds;
+    double ratio = path_rays / raw.rays_per_second();
+
+    if (args.json) {
+        nlohmann::json j = {{"scene", args.scene.empty() ? "<built-in cornell-box>" : args.scene},
+                            {"threads", threads},
+                            {"resolution", {w, h}},
+                            {"spp", args.spp},
+                            {"embree_incoherent_rays_per_second", raw.rays_per_second()},
+                            {"path_rays_per_second", path_rays},
+                            {"path_samples_per_second", samples},
+                            {"path_rays_per_sample", double(r.rays) / r.samples},
+                            {"ratio", ratio},
+                            {"version", ILLUM_VERSION}};
+        fmt::print("{}\n", j.dump(2));
+        return;
+    }
+    fmt::print("scene: {} ({}x{}, {} spp, {} threads)\n", args.scene.empty() ? "built-in Cornell box" : args.scene, w,
+               h, args.spp, threads);
+    fmt::print("  Embree closest hit, incoherent rays : {:10.2f} Mrays/s ({} rays in {:.3f} s)\n",
+               raw.rays_per_second() / 1e6, raw.rays, raw.seconds);
+    fmt::print("  path tracer                          : {:10.2f} Mrays/s, {:.2f} Msamples/s ({:.2f} rays/sample)\n",
+               path_rays / 1e6, samples / 1e6, double(r.rays) / r.samples);
+    fmt::print("  path tracer / raw Embree             : {:10.1f} %\n", 100 * ratio);
+}
+
+} // namespace
+
+void add_bench_command(CLI::App& app) {
+    auto args = std::make_shared<BenchArgs>();
+    CLI::App* cmd = app.add_subcommand("bench", "Measure ray and sample throughput (default: the built-in Cornell box)");
+    cmd->add_option("scene", args->scene, "Scene file (.pbrt); omit for the built-in Cornell box");
+    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
+    cmd->add_option("--spp", args->spp, "Samples per pixel of the path-traced render")->check(CLI::PositiveNumber);
+    cmd->add_option("--resolution", args->resolution, "Film resolution WIDTHxHEIGHT");
+    cmd->add_option("--rays", args->rays, "Number of incoherent rays for the raw Embree rate")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--json", args->json, "Print the figures as JSON");
+    cmd->callback([args] { run(*args); });
+}
+
+} // namespace illum::cli

@@ -1,0 +1,14 @@
+// Loading a scene for the CLI: a pbrt-v4 file, or the built-in Cornell box when no file is named.
+#pragma once
+
+#include <string>
+
+#include "illum/scene/scene_desc.h"
+
+namespace illum::cli {
+
+SceneDesc load_scene_desc(const std::string& path);
+// Prints each warning as `warning: ...` on stderr.
+void print_warnings(const std::vector<std::string>& warnings);
+
+} // namespace illum::cli
