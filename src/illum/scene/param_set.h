@@ -13,10 +13,25 @@
 
 namespace illum {
 
-enum class ParamType { Float, Integer, Bool, String, RGB, Spectrum, Point2, Point3, Vector3, Normal, Texture };
+enum class ParamType {
+    Float,
+    Integer,
+    Bool,
+    String,
+    RGB,
+    Spectrum,
+    Point2,
+    Point3,
+    Vector3,
+    Normal,
+    Texture
+};
 const char* to_string(ParamType t);
 std::optional<ParamType> param_type_from_string(const std::string& s);
 
+// A pbrt-v4 "blackbody T" parameter is stored as type Spectrum with strings = {"blackbody"} and
+// numbers = {T} (T in kelvin); a named or file spectrum has one string and no numbers; a sampled spectrum
+// has numbers only (wavelength-value pairs).
 struct Param {
     ParamType type = ParamType::Float;
     std::string name;

@@ -21,6 +21,7 @@ struct EntityDesc {
 
 struct CameraDesc : EntityDesc {
     Transform camera_from_world; // pbrt's CTM at the Camera directive
+    std::string medium;          // the outside medium current at the Camera directive ("" for none)
 };
 
 struct MaterialDesc : EntityDesc {
@@ -34,6 +35,7 @@ struct TextureDesc : EntityDesc {
 };
 
 // Which material a shape uses: an index into SceneDesc::materials, or a name resolved at build time.
+// Neither (index -1, empty name) means pbrt-v4's default material: "diffuse" with reflectance 0.5.
 struct MaterialRef {
     int index = -1;
     std::string name;
@@ -49,6 +51,13 @@ struct ShapeDesc : EntityDesc {
 
 struct LightDesc : EntityDesc {
     Transform world_from_light;
+    std::string medium; // the outside medium current at the LightSource directive
+};
+
+// MakeNamedMedium: recorded as given; the renderer may not support participating media.
+struct MediumDesc : EntityDesc {
+    std::string name;
+    Transform world_from_medium;
 };
 
 struct InstanceDefinition {
@@ -65,14 +74,15 @@ struct InstanceUse {
 
 struct SceneDesc {
     std::string filename; // the top-level file, "" for a built-in scene
-    std::string base_dir;  // relative file names in parameters resolve against this
+    std::string base_dir; // relative file names in parameters resolve against this
 
     CameraDesc camera;
     EntityDesc film{"rgb", {}, {}};
     EntityDesc sampler{"zsobol", {}, {}};
     EntityDesc filter{"gaussian", {}, {}};
     EntityDesc integrator{"volpath", {}, {}};
-    std::map<std::string, std::string> options; // Option directives
+    std::map<std::string, std::string> options; // Option directives: name -> value as text
+    std::string color_space = "srgb";           // the last ColorSpace directive
 
     std::vector<MaterialDesc> materials; // anonymous and named; named ones are also in named_materials
     std::map<std::string, int> named_materials;
@@ -83,6 +93,7 @@ struct SceneDesc {
     std::vector<LightDesc> lights;
     std::map<std::string, InstanceDefinition> instances;
     std::vector<InstanceUse> instance_uses;
+    std::map<std::string, MediumDesc> media; // MakeNamedMedium
 
     std::vector<std::string> warnings; // recognised but unsupported features, with positions
 };
