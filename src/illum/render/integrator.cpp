@@ -4,6 +4,7 @@
 #include "illum/render/aov_integrator.h"
 #include "illum/render/direct_integrator.h"
 #include "illum/render/path_integrator.h"
+#include "illum/util/error.h"
 
 namespace illum {
 

@@ -10,6 +10,7 @@
 
 #include "illum/camera/film.h"
 #include "illum/render/progress.h"
+#include "illum/util/error.h"
 
 namespace illum {
 

@@ -6,6 +6,7 @@
 #include "illum/light/diffuse_area_light.h"
 #include "illum/light/point_light.h"
 #include "illum/light/uniform_environment_light.h"
+#include "illum/scene/pbrt/ply.h"
 
 namespace illum {
 
@@ -125,17 +126,21 @@ private:
     }
 
     const ColorTexture* color_param(const EntityDesc& e, const std::string& name, Color3 def) {
-        std::string tex = e.params.get_texture(name);
-        if (!tex.empty()) {
-            unsupported(e.params.find(name)->loc, fmt::format("texture \"{}\" is not supported yet; using {}", tex, name));
-        }
         Color3 c = def;
-        if (auto rgb = e.params.get_rgb(name)) c = *rgb;
-        else if (e.params.has(name) && e.params.find(name)->type == ParamType::Float) {
-            c = Color3(e.params.get_float(name, 0));
-        } else if (e.params.has(name) && e.params.find(name)->type == ParamType::Spectrum) {
-            e.params.find(name)->used = true;
-            unsupported(e.params.find(name)->loc, fmt::format("spectrum \"{}\" is approximated by its default", name));
+        if (const Param* p = e.params.find(name)) {
+            switch (p->type) {
+            case ParamType::RGB: c = *e.params.get_rgb(name); break;
+            case ParamType::Float: c = Color3(e.params.get_float(name, 0)); break;
+            case ParamType::Texture:
+                unsupported(p->loc, fmt::format("texture \"{}\" for \"{}\" is not supported yet; using its default",
+                                                e.params.get_texture(name), name));
+                break;
+            case ParamType::Spectrum:
+                p->used = true;
+                unsupported(p->loc, fmt::format("spectrum \"{}\" is approximated by its default", name));
+                break;
+            default: e.params.fail(*p, fmt::format("parameter \"{}\" cannot be of type {}", name, to_string(p->type)));
+            }
         }
         scene_->color_textures.push_back(std::make_unique<ConstantColorTexture>(c));
         return scene_->color_textures.back().get();
@@ -284,7 +289,27 @@ private:
                 light = scene_->lights.back().get();
             }
             scene_->accelerator.add_disk(std::move(disk), resolve(s.material, s.loc), light);
-        } else if (s.type == "plymesh" || s.type == "bilinearmesh" || s.type == "cylinder" || s.type == "loopsubdiv" ||
+        } else if (s.type == "plymesh") {
+            std::string file = s.params.get_string("filename", "");
+            if (file.empty()) throw Error(s.loc, "plymesh needs \"string filename\"");
+            TriangleMeshData data;
+            try {
+                data = read_ply(file);
+            } catch (const Error& e) {
+                throw Error(s.params.find("filename")->loc, e.what());
+            }
+            if (data.indices.empty()) {
+                unsupported(s.loc, fmt::format("plymesh \"{}\" has no triangles and is skipped", file));
+                return;
+            }
+            if (s.params.has("displacement")) unsupported(s.loc, "plymesh displacement is ignored");
+            auto mesh = std::make_unique<TriangleMesh>();
+            mesh->p = std::move(data.positions);
+            mesh->n = std::move(data.normals);
+            mesh->uv = std::move(data.uvs);
+            mesh->indices.assign(data.indices.begin(), data.indices.end());
+            add_mesh(s, std::move(mesh));
+        } else if (s.type == "bilinearmesh" || s.type == "cylinder" || s.type == "loopsubdiv" ||
                    s.type == "curve" || s.type == "cone" || s.type == "paraboloid" || s.type == "hyperboloid") {
             unsupported(s.loc, fmt::format("shape \"{}\" is not supported yet and is skipped", s.type));
         } else {
