@@ -306,7 +306,7 @@ TEST(Warp, UniformTriangle) {
     // ∫ x dA = area * centroid.x.
     EXPECT_TRUE(mc_ok({mean_x.mean, mean_x.std_error(), area * (v0.x + v1.x + v2.x) / 3.0}));
 
-    // Histogram over the 2 n² - n ... sub-triangles of equal area; barycentrics valid and summing to 1.
+    // Histogram over the n² sub-triangles of equal area; barycentrics valid and summing to 1.
     const int n = 8;
     std::vector<double> observed(static_cast<size_t>(2 * n * n)), expected(static_cast<size_t>(2 * n * n));
     int invalid = 0;
