@@ -74,7 +74,7 @@ McResult mc_directions(const DirWarp& warp, const DirPdf& pdf, const std::functi
 
 Chi2Result chi2_directions(const DirWarp& warp, const DirPdf& pdf, double zmin, double zmax, uint64_t seed,
                            int nz = 10, int nphi = 20) {
-    std::vector<double> observed(size_t(nz * nphi)), expected(size_t(nz * nphi));
+    std::vector<double> observed(static_cast<size_t>(nz * nphi)), expected(static_cast<size_t>(nz * nphi));
     PCG32 rng(seed);
     for (int i = 0; i < kChi2Samples; ++i) {
         Point2f u{rng.uniform_float(), rng.uniform_float()};
@@ -306,9 +306,9 @@ TEST(Warp, UniformTriangle) {
     // ∫ x dA = area * centroid.x.
     EXPECT_TRUE(mc_ok({mean_x.mean, mean_x.std_error(), area * (v0.x + v1.x + v2.x) / 3.0}));
 
-    // Histogram over the 2 n² - n ... sub-triangles of equal area; barycentrics valid and summing to 1.
+    // Histogram over the n² sub-triangles of equal area; barycentrics valid and summing to 1.
     const int n = 8;
-    std::vector<double> observed(size_t(2 * n * n)), expected(size_t(2 * n * n));
+    std::vector<double> observed(static_cast<size_t>(2 * n * n)), expected(static_cast<size_t>(2 * n * n));
     int invalid = 0;
     for (int i = 0; i < kChi2Samples; ++i) {
         auto b = sample_uniform_triangle({rng.uniform_float(), rng.uniform_float()});
@@ -392,7 +392,8 @@ TEST(Warp, SphericalTriangle) {
         double worst_pdf = 0;
         int bad = 0;
         const int n = 6;
-        std::vector<double> observed(size_t(2 * n * n)), expected(size_t(2 * n * n));
+        std::vector<double> observed(static_cast<size_t>(2 * n * n)),
+            expected(static_cast<size_t>(2 * n * n));
         for (int i = 0; i < kMcSamples; ++i) {
             float pdf;
             auto b = sample_spherical_triangle(c.v, c.p, {rng.uniform_float(), rng.uniform_float()}, &pdf);

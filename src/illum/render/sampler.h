@@ -116,9 +116,15 @@ public:
     }
 
 private:
+    // One finaliser round per dimension (a Weyl step keeps dimensions apart); pixel_hash_ already mixes
+    // (seed, pixel).
+    uint64_t dimension_hash(uint32_t dim) const {
+        return mix_bits(pixel_hash_ + (uint64_t(dim) + 1) * 0x9e3779b97f4a7c15ULL);
+    }
+
     float sobol_1d(uint32_t dim) const {
         using namespace sampling_detail;
-        uint64_t h = hash(pixel_hash_, dim);
+        uint64_t h = dimension_hash(dim);
         uint32_t i = nested_uniform_scramble(index_, uint32_t(h));
         // sobol_dim0(i) = reverse_bits(i), so the scrambled value reverse(LK(reverse(reverse(i)))) needs only
         // one reversal.
@@ -127,7 +133,7 @@ private:
 
     Point2f sobol_2d(uint32_t dim) const {
         using namespace sampling_detail;
-        uint64_t h = hash(pixel_hash_, dim), h2 = mix_bits(h);
+        uint64_t h = dimension_hash(dim), h2 = mix_bits(h);
         uint32_t i = nested_uniform_scramble(index_, uint32_t(h));
         uint32_t x = reverse_bits(laine_karras_permutation(i, uint32_t(h >> 32)));
         uint32_t y = nested_uniform_scramble(sobol_dim1(i), uint32_t(h2));
