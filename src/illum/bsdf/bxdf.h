@@ -52,7 +52,8 @@ struct BSDFSample {
     bool is_specular() const { return has_flag(flags, kSpecular); }
     bool is_transmission() const { return has_flag(flags, kTransmission); }
     bool is_reflection() const { return has_flag(flags, kReflection); }
-    // The path throughput weight f |cos θi| / pdf (dimensionless).
+    // The path throughput weight f |cos θi| / pdf (dimensionless), for a sample in the local shading
+    // frame only (BxDF::sample); BSDF::sample returns wi in world space.
     Color3 weight() const { return f.rgb * (std::abs(wi.z) / pdf.value); }
 };
 

@@ -59,7 +59,9 @@ RTCRay to_embree(const Ray& ray) {
     r.org_x = ray.o.x;
     r.org_y = ray.o.y;
     r.org_z = ray.o.z;
-    r.tnear = 0;
+    // Not 0: Embree flushes denormals, so an origin stepped one ulp off an exact coordinate (z = 0) can
+    // read as lying on the surface and report t = 0. No true hit lies closer than the smallest normal float.
+    r.tnear = std::numeric_limits<float>::min();
     r.dir_x = ray.d.x;
     r.dir_y = ray.d.y;
     r.dir_z = ray.d.z;

@@ -29,15 +29,16 @@ struct Ray {
 inline float next_float_up(float v) { return std::nextafter(v, kInfinity); }
 inline float next_float_down(float v) { return std::nextafter(v, -kInfinity); }
 
-// Moves p off the surface with normal n, on the side of w, past its error bound p_error.
+// Moves p off the surface with normal n, on the side of w, past its error bound p_error. Each coordinate
+// is then rounded one ulp further along the (signed) normal, so the origin leaves the surface even where
+// the bound is zero (a coordinate that is exact, such as z on the plane z = 0).
 inline Point3f offset_ray_origin(Point3f p, Vector3f p_error, Normal3f n, Vector3f w) {
     float d = dot(abs(Vector3f(n)), p_error);
-    Vector3f offset = Vector3f(n) * d;
-    if (dot(w, n) < 0) offset = -offset;
-    Point3f po = p + offset;
+    Vector3f side = dot(w, n) < 0 ? -Vector3f(n) : Vector3f(n);
+    Point3f po = p + side * d;
     for (int i = 0; i < 3; ++i) {
-        if (offset[i] > 0) po[i] = next_float_up(po[i]);
-        else if (offset[i] < 0) po[i] = next_float_down(po[i]);
+        if (side[i] > 0) po[i] = next_float_up(po[i]);
+        else if (side[i] < 0) po[i] = next_float_down(po[i]);
     }
     return po;
 }

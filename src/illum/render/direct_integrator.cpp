@@ -39,7 +39,7 @@ Radiance3 DirectIntegrator::reflected_from(const Light& light, const SurfaceHit&
     }
     if (le.is_black()) return l;
     float w = bs->pdf_is_proportional ? 1.0f : power_heuristic(bs->pdf.value, p_light);
-    l += le * (bs->weight() * w);
+    l += le * (bs->f.rgb * (abs_dot(bs->wi, hit.ns) * w / bs->pdf.value));
     return l;
 }
 
@@ -47,6 +47,7 @@ Radiance3 DirectIntegrator::radiance(Ray ray, ThreadContext& tc) const {
     Radiance3 l;
     Color3 beta(1.0f);
     for (int depth = 0;;) {
+        tc.arena.reset();
         SurfaceHit hit;
         if (!intersect(ray, &hit, tc)) {
             for (const Light* env : scene_.infinite_lights) l += env->le(ray) * beta;
@@ -66,10 +67,11 @@ Radiance3 DirectIntegrator::radiance(Ray ray, ThreadContext& tc) const {
             break;
         }
         // A specular surface: follow the reflection/refraction.
-        if (max_depth_ >= 0 && depth++ >= max_depth_) break;
+        if (max_depth_ >= 0 && depth >= max_depth_) break;
+        ++depth;
         auto bs = bsdf.sample(hit.wo, tc.sampler.get_1d(), tc.sampler.get_2d());
         if (!bs) break;
-        beta *= bs->weight();
+        beta *= bs->f.rgb * (abs_dot(bs->wi, hit.ns) / bs->pdf.value);
         ray = hit.spawn_ray(bs->wi);
     }
     return l;

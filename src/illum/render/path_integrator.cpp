@@ -13,7 +13,8 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
     LightSampleContext prev_ctx;
     Sampler& sampler = tc.sampler;
 
-    for (int depth = 0;; ) {
+    for (int depth = 0;;) {
+        tc.arena.reset(); // the previous vertex's BSDF is no longer needed
         SurfaceHit hit;
         if (!intersect(ray, &hit, tc)) {
             for (const Light* env : scene_.infinite_lights) {
@@ -49,7 +50,8 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
             continue;
         }
         if (bsdf.flags() == kNone) break; // a black surface scatters nothing
-        if (max_depth_ >= 0 && depth++ >= max_depth_) break;
+        if (max_depth_ >= 0 && depth >= max_depth_) break;
+        ++depth;
 
         Vector3f wo = hit.wo;
         LightSampleContext ctx(hit);

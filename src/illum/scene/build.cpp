@@ -97,9 +97,11 @@ private:
         RenderRequest& r = scene_->request;
         const EntityDesc& in = desc_.integrator;
         r.max_depth = in.params.get_int("maxdepth", 5);
-        if (r.max_depth < 0) throw Error(in.loc, "maxdepth must be non-negative");
+        if (r.max_depth < -1) throw Error(in.loc, "maxdepth must be -1 (unbounded) or non-negative");
         if (in.type == "path" || in.type == "simplepath") {
             r.integrator = "path";
+        } else if (in.type == "direct" || in.type == "directlighting") {
+            r.integrator = "direct"; // illum's own, and pbrt-v3's name for it
         } else if (in.type == "volpath") {
             r.integrator = "path"; // surfaces only; media are reported where they are declared
         } else if (in.type == "bdpt" || in.type == "mlt" || in.type == "sppm" || in.type == "lightpath" ||

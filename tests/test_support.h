@@ -1,0 +1,59 @@
+// Helpers shared by tests: render a pbrt-v4 scene given as text, and estimate a mean with its standard
+// error from independent pixels.
+#pragma once
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "illum/image/image.h"
+#include "illum/render/renderer.h"
+#include "illum/scene/build.h"
+#include "illum/scene/pbrt/parser.h"
+
+namespace illum::test {
+
+inline std::string shared_dir() { return ILLUM_SHARED_DIR; }
+inline bool have_shared() { return std::filesystem::is_directory(std::filesystem::path(shared_dir()) / "scenes"); }
+
+struct RenderSetup {
+    std::string integrator = "path";
+    int max_depth = -2; // -2: the scene's
+    int spp = 16;
+    int threads = 0;
+    std::uint64_t seed = 0;
+    std::string sampler = "sobol";
+};
+
+inline RenderResult render_pbrt(const std::string& text, const RenderSetup& setup = {}) {
+    SceneDesc desc = parse_pbrt_string(text, "<test>", ".");
+    auto scene = build_scene(desc);
+    auto integrator =
+        make_integrator(setup.integrator, *scene, setup.max_depth == -2 ? scene->request.max_depth : setup.max_depth);
+    RenderOptions opt;
+    opt.spp = setup.spp;
+    opt.threads = setup.threads;
+    opt.seed = setup.seed;
+    opt.sampler = setup.sampler;
+    opt.quiet = true;
+    return render(*scene, *integrator, opt);
+}
+
+// Mean of one channel over the pixels and its standard error, treating pixels as independent
+// estimates (they are: each has its own scrambled sample sequence).
+struct MeanEstimate {
+    double mean = 0, standard_error = 0;
+};
+inline MeanEstimate pixel_mean(const Image& img, int channel) {
+    double sum = 0, sum2 = 0;
+    std::size_t n = img.pixel_count();
+    for (std::size_t i = 0; i < n; ++i) {
+        double v = img.data()[i][channel];
+        sum += v;
+        sum2 += v * v;
+    }
+    double mean = sum / n, var = std::max(0.0, (sum2 - n * mean * mean) / (n - 1));
+    return {mean, std::sqrt(var / n)};
+}
+
+} // namespace illum::test
