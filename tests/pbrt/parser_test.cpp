@@ -277,6 +277,7 @@ TEST(PbrtParser, LightsTexturesAndAttributes) {
         LightSource "point" "rgb I" [ 1 1 1 ]
         Texture "checks" "spectrum" "checkerboard" "float uscale" 4
         Texture "bumps" "float" "imagemap" "string filename" "tex/bump.png"
+        Material "diffuse" "string normalmap" "../nm.png"
         Attribute "shape" "float radius" 2
         Attribute "light" "float scale" 3
         Shape "sphere"
@@ -295,6 +296,7 @@ TEST(PbrtParser, LightsTexturesAndAttributes) {
     EXPECT_EQ(s.textures[0].value_type, "spectrum");
     expect_point_near(s.textures[0].world_from_texture(Point3f(0, 0, 0)), Point3f(0, 10, 0));
     EXPECT_EQ(s.textures[1].params.get_string("filename", ""), "/scenes/here/tex/bump.png");
+    EXPECT_EQ(s.materials[0].params.get_string("normalmap", ""), "/scenes/nm.png");
     ASSERT_EQ(s.shapes.size(), 2u);
     EXPECT_FLOAT_EQ(s.shapes[0].params.get_float("radius", 0), 2);
     EXPECT_FLOAT_EQ(s.shapes[1].params.get_float("radius", 0), 5);

@@ -82,6 +82,12 @@ TEST(Tokenizer, NanAndInfAreNumbers) {
     EXPECT_TRUE(std::isinf(t[3].number));
 }
 
+TEST(Tokenizer, ByteOrderMarkIsSkipped) {
+    auto t = all_tokens("\xEF\xBB\xBFWorldBegin");
+    ASSERT_EQ(t.size(), 1u);
+    EXPECT_EQ(t[0].raw, "WorldBegin");
+}
+
 TEST(Tokenizer, PeekDoesNotConsume) {
     Tokenizer tk("A B", "t.pbrt");
     EXPECT_EQ(tk.peek().text, "A");
