@@ -161,7 +161,8 @@ TEST(PbrtParser, TransformColumnMajorIsTransposed) {
     // A general matrix: the file lists it column by column.
     SceneDesc s = parse(R"(Transform [ 1 5 9 0  2 6 10 0  3 7 12 0  4 8 11 1 ]
         Camera "perspective" WorldBegin)");
-    expect_matrix_near(s.camera.camera_from_world.matrix(), rows({1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 12, 11, 0, 0, 0, 1}));
+    expect_matrix_near(s.camera.camera_from_world.matrix(),
+                       rows({1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 12, 11, 0, 0, 0, 1}));
     expect_inverse_consistent(s.camera.camera_from_world);
 }
 
@@ -276,6 +277,7 @@ TEST(PbrtParser, LightsTexturesAndAttributes) {
         LightSource "point" "rgb I" [ 1 1 1 ]
         Texture "checks" "spectrum" "checkerboard" "float uscale" 4
         Texture "bumps" "float" "imagemap" "string filename" "tex/bump.png"
+        Material "diffuse" "string normalmap" "../nm.png"
         Attribute "shape" "float radius" 2
         Attribute "light" "float scale" 3
         Shape "sphere"
@@ -294,6 +296,7 @@ TEST(PbrtParser, LightsTexturesAndAttributes) {
     EXPECT_EQ(s.textures[0].value_type, "spectrum");
     expect_point_near(s.textures[0].world_from_texture(Point3f(0, 0, 0)), Point3f(0, 10, 0));
     EXPECT_EQ(s.textures[1].params.get_string("filename", ""), "/scenes/here/tex/bump.png");
+    EXPECT_EQ(s.materials[0].params.get_string("normalmap", ""), "/scenes/nm.png");
     ASSERT_EQ(s.shapes.size(), 2u);
     EXPECT_FLOAT_EQ(s.shapes[0].params.get_float("radius", 0), 2);
     EXPECT_FLOAT_EQ(s.shapes[1].params.get_float("radius", 0), 5);
@@ -323,7 +326,8 @@ TEST(PbrtParser, FilenamesResolveAgainstTheNamingFile) {
 TEST(PbrtParser, ImportIsLikeInclude) {
     test::TempDir dir("import");
     dir.write("geo.pbrt", "Shape \"sphere\"\n");
-    SceneDesc s = parse_pbrt_string("WorldBegin Translate 1 0 0 Import \"geo.pbrt\"", "main.pbrt", dir.path());
+    SceneDesc s =
+        parse_pbrt_string("WorldBegin Translate 1 0 0 Import \"geo.pbrt\"", "main.pbrt", dir.path());
     ASSERT_EQ(s.shapes.size(), 1u);
     expect_point_near(s.shapes[0].world_from_object(Point3f(0, 0, 0)), Point3f(1, 0, 0));
 }
@@ -379,7 +383,7 @@ TEST(PbrtParser, MediaAndMotionGiveWarnings) {
     EXPECT_FALSE(s.media.at("fog").params.has("type"));
     EXPECT_EQ(s.camera.medium, "fog");
     EXPECT_TRUE(s.camera.camera_from_world.is_identity()); // end-time transforms are ignored
-    ASSERT_EQ(s.warnings.size(), 2u); // one for media, one for motion blur
+    ASSERT_EQ(s.warnings.size(), 2u);                      // one for media, one for motion blur
     EXPECT_NE(s.warnings[0].find("media"), std::string::npos);
     EXPECT_NE(s.warnings[1].find("motion blur"), std::string::npos);
 }

@@ -17,8 +17,9 @@ class TempDir {
 public:
     explicit TempDir(const std::string& tag) {
         static int counter = 0;
-        path_ = std::filesystem::temp_directory_path() /
-                ("illum_pbrt_test_" + tag + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+        path_ =
+            std::filesystem::temp_directory_path() /
+            ("illum_pbrt_test_" + tag + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
         std::filesystem::remove_all(path_);
         std::filesystem::create_directories(path_);
     }

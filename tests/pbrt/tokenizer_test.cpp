@@ -10,22 +10,32 @@
 namespace illum {
 namespace {
 
-std::vector<Token> all_tokens(const std::string& text) {
+// A token with its raw text copied out (Token::text points into the tokenizer's buffer).
+struct OwnedToken : Token {
+    std::string raw;
+};
+
+std::vector<OwnedToken> all_tokens(const std::string& text) {
     Tokenizer tk(text, "t.pbrt");
-    std::vector<Token> r;
+    std::vector<OwnedToken> r;
     while (true) {
         Token t = tk.next();
         if (t.kind == TokenKind::End) break;
-        r.push_back(std::move(t));
+        OwnedToken o;
+        static_cast<Token&>(o) = std::move(t);
+        o.raw = std::string(o.text);
+        o.text = {};
+        r.push_back(std::move(o));
     }
     return r;
 }
 
 TEST(Tokenizer, KindsValuesAndPositions) {
-    auto t = all_tokens("Shape \"sphere\" # comment \"not a string\"\n  \"float radius\" [ 1.5 -2 +3e2 .5 ]\n");
+    auto t =
+        all_tokens("Shape \"sphere\" # comment \"not a string\"\n  \"float radius\" [ 1.5 -2 +3e2 .5 ]\n");
     ASSERT_EQ(t.size(), 9u);
     EXPECT_EQ(t[0].kind, TokenKind::Word);
-    EXPECT_EQ(t[0].text, "Shape");
+    EXPECT_EQ(t[0].raw, "Shape");
     EXPECT_EQ(t[0].line, 1);
     EXPECT_EQ(t[0].column, 1);
     EXPECT_EQ(t[1].kind, TokenKind::String);
@@ -53,12 +63,14 @@ TEST(Tokenizer, Escapes) {
 
 TEST(Tokenizer, BracketsNeedNoSpaces) {
     auto t = all_tokens("[1 2]\"x\"[\"y\"]");
-    ASSERT_EQ(t.size(), 7u);
+    ASSERT_EQ(t.size(), 8u);
     EXPECT_EQ(t[0].kind, TokenKind::LBracket);
     EXPECT_EQ(t[2].kind, TokenKind::Number);
     EXPECT_EQ(t[3].kind, TokenKind::RBracket);
     EXPECT_EQ(t[4].str, "x");
-    EXPECT_EQ(t[6].kind, TokenKind::RBracket);
+    EXPECT_EQ(t[5].kind, TokenKind::LBracket);
+    EXPECT_EQ(t[6].str, "y");
+    EXPECT_EQ(t[7].kind, TokenKind::RBracket);
 }
 
 TEST(Tokenizer, NanAndInfAreNumbers) {
@@ -68,6 +80,12 @@ TEST(Tokenizer, NanAndInfAreNumbers) {
     EXPECT_TRUE(std::isinf(t[1].number));
     EXPECT_TRUE(std::isinf(t[2].number) && t[2].number < 0);
     EXPECT_TRUE(std::isinf(t[3].number));
+}
+
+TEST(Tokenizer, ByteOrderMarkIsSkipped) {
+    auto t = all_tokens("\xEF\xBB\xBFWorldBegin");
+    ASSERT_EQ(t.size(), 1u);
+    EXPECT_EQ(t[0].raw, "WorldBegin");
 }
 
 TEST(Tokenizer, PeekDoesNotConsume) {

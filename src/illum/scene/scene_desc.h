@@ -62,7 +62,9 @@ struct MediumDesc : EntityDesc {
 
 struct InstanceDefinition {
     std::string name;
-    std::vector<ShapeDesc> shapes; // world_from_object relative to the instance's space
+    // world_from_object is the full CTM at the Shape, as pbrt-v4 keeps it (including any transform in
+    // effect at ObjectBegin); a use places the shape at world_from_instance * world_from_object.
+    std::vector<ShapeDesc> shapes;
     SourceLocation loc;
 };
 

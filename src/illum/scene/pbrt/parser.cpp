@@ -336,7 +336,8 @@ private:
         case ParamType::Texture:
             if (first_num) wrong_kind(first_num, "quoted strings", "number");
             if (first_bool) wrong_kind(first_bool, "quoted strings", "bool");
-            if (resolve_files && p.type == ParamType::String && p.name == "filename")
+            if (resolve_files && p.type == ParamType::String &&
+                (p.name == "filename" || p.name == "normalmap"))
                 for (auto& str : strs) str = resolve_path(f.dir, str);
             break;
         case ParamType::Spectrum:

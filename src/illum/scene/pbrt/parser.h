@@ -15,9 +15,10 @@
 //    world_from_instance * world_from_object;
 //  - NamedMaterial and ObjectInstance may name things defined later in the file (checked at the end);
 //  - relative file names resolve against the directory of the file that names them: Include/Import, and
-//    string parameters named "filename" of shapes, textures, lights, materials and media (the Film's
-//    output "filename" is left as written); a "spectrum" string that names an existing file relative to
-//    that directory is resolved too, other strings are kept (named spectra such as "metal-Au-eta");
+//    string parameters named "filename" (and a material's "normalmap") of shapes, textures, lights,
+//    materials and media (the Film's output "filename" is left as written); a "spectrum" string that
+//    names an existing file relative to that directory is resolved too, other strings are kept (named
+//    spectra such as "metal-Au-eta");
 //  - ActiveTransform EndTime: transform directives are ignored (the start-time geometry is kept), with
 //    a warning; TransformTimes is recorded as a warning only.
 #pragma once

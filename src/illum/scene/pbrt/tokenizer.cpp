@@ -26,7 +26,10 @@ const char* to_string(TokenKind k) {
 }
 
 Tokenizer::Tokenizer(std::string text, std::string filename)
-    : text_(std::move(text)), filename_(std::move(filename)) {}
+    : text_(std::move(text)), filename_(std::move(filename)) {
+    // A UTF-8 byte order mark is skipped (columns still count from the start of the line).
+    if (text_.compare(0, 3, "\xEF\xBB\xBF") == 0) pos_ = 3;
+}
 
 void Tokenizer::fail(const Token& t, const std::string& message) const { fail_at(t.line, t.column, message); }
 

@@ -15,7 +15,7 @@ enum class TokenKind { Word, String, Number, LBracket, RBracket, End };
 
 struct Token {
     TokenKind kind = TokenKind::End;
-    std::string_view text; // the raw source text of the token (for a string: with its quotes)
+    std::string_view text; // raw source text (a string with its quotes); valid while the Tokenizer lives
     std::string str;       // String: the value with escapes resolved
     double number = 0;     // Number: the value (also for the words nan, inf, infinity)
     int line = 0, column = 0;
