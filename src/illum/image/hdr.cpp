@@ -70,6 +70,10 @@ Scan scan_rgbe(std::span<const unsigned char> b) {
     return Scan::Complete;
 }
 
+// The largest value RGBE holds: exponent byte 255 (2^127) with mantissa 255/256. Anything at or above
+// 2^127 would overflow stb's exponent byte and wrap to black.
+const float kMaxRgbe = std::ldexp(255.0f / 256.0f, 127);
+
 void append(void* context, void* data, int size) {
     static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
 }
@@ -100,7 +104,7 @@ std::string encode_hdr(const Image& image) {
     for (std::size_t i = 0; i < image.pixel_count(); ++i)
         for (int c = 0; c < 3; ++c) {
             const float v = image.data()[i][c];
-            rgb[3 * i + c] = std::isnan(v) || v < 0 ? 0.0f : std::min(v, std::numeric_limits<float>::max());
+            rgb[3 * i + c] = std::isnan(v) || v < 0 ? 0.0f : std::min(v, kMaxRgbe);
         }
     std::string out;
     if (!stbi_write_hdr_to_func(append, &out, image.width(), image.height(), 3, rgb.data()))
