@@ -75,6 +75,23 @@ TEST(Hdr, TruncatedFilesThrow) {
             EXPECT_THROW(read_image(path), Error) << "width " << width << ", cut at " << cut;
         }
     }
+    // A zero-length literal run (stb alone would loop forever on it) and a run longer than the scanline.
+    const std::string good = dir.file("good.hdr");
+    write_image(Image(64, 2, Color3(0.5f)), good);
+    const std::string bytes = test::file_contents(good);
+    const std::size_t marker = bytes.find(std::string("\x02\x02\x00\x40", 4));
+    ASSERT_NE(marker, std::string::npos);
+    for (unsigned char count : {0, 128 + 65, 65}) {
+        std::string corrupt = bytes;
+        corrupt[marker + 4] = char(count);
+        test::write_contents(path, corrupt);
+        EXPECT_THROW(read_image(path), Error) << int(count);
+    }
+    // Orientation stb cannot read.
+    std::string rotated = bytes;
+    rotated.replace(rotated.find("-Y 2 +X 64"), 10, "+X 64 -Y 2");
+    test::write_contents(path, rotated);
+    EXPECT_THROW(read_image(path), Error);
     test::write_contents(path, "not an hdr file at all");
     EXPECT_THROW(read_image(path), Error);
 }

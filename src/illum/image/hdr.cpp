@@ -21,11 +21,12 @@ namespace {
 
 std::string quoted(const std::string& s) { return "\"" + s + "\""; }
 
-enum class Scan { Complete, Truncated, Unknown };
+enum class Scan { Complete, Truncated, Corrupt };
 
 // Walks the pixel data the way stb's decoder will (Radiance "new" run-length scanlines, falling back to
 // flat RGBE for the rest of the image at the first scanline without the 2, 2 marker) and reports whether
-// the file holds all of it. Unknown for headers this walker does not parse; stb then decides.
+// the file holds all of it. stb is only run on files that pass: Debian's stb_image loops forever on a
+// zero-length literal run, and returns the pixels of a truncated file as black instead of failing.
 Scan scan_rgbe(std::span<const unsigned char> b) {
     std::size_t pos = 0;
     auto next_line = [&](std::string& line) {
@@ -36,13 +37,14 @@ Scan scan_rgbe(std::span<const unsigned char> b) {
         return true;
     };
     std::string line;
-    if (!next_line(line) || line.rfind("#?", 0) != 0) return Scan::Unknown;
+    if (!next_line(line) || line.rfind("#?", 0) != 0) return Scan::Corrupt;
     do {
         if (!next_line(line)) return Scan::Truncated;
     } while (!line.empty());
     if (!next_line(line)) return Scan::Truncated;
     int h = 0, w = 0;
-    if (std::sscanf(line.c_str(), "-Y %d +X %d", &h, &w) != 2 || w <= 0 || h <= 0) return Scan::Unknown;
+    // stb reads only this orientation (top to bottom, left to right).
+    if (std::sscanf(line.c_str(), "-Y %d +X %d", &h, &w) != 2 || w <= 0 || h <= 0) return Scan::Corrupt;
 
     const std::size_t flat_row = 4 * std::size_t(w);
     for (int y = 0; y < h; ++y) {
@@ -61,7 +63,7 @@ Scan scan_rgbe(std::span<const unsigned char> b) {
                     count -= 128;
                     literal = 1;
                 }
-                if (count == 0 || count > w - x) return Scan::Unknown; // corrupt; stb reports it
+                if (count == 0 || count > w - x) return Scan::Corrupt;
                 if (b.size() - pos < literal) return Scan::Truncated;
                 pos += literal;
                 x += count;
@@ -86,7 +88,15 @@ Image decode_hdr(std::span<const unsigned char> bytes, const std::string& name) 
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int len = int(bytes.size());
     if (!stbi_is_hdr_from_memory(data, len)) throw Error(quoted(name) + " is not a Radiance HDR file");
-    if (scan_rgbe(bytes) == Scan::Truncated) throw Error(quoted(name) + " is truncated");
+    switch (scan_rgbe(bytes)) {
+    case Scan::Truncated:
+        throw Error(quoted(name) + " is truncated");
+    case Scan::Corrupt:
+        throw Error(quoted(name) +
+                    " is corrupt or unsupported (bad header, resolution line or run-length data)");
+    case Scan::Complete:
+        break;
+    }
     int w = 0, h = 0, n = 0;
     std::unique_ptr<float, void (*)(void*)> pixels(stbi_loadf_from_memory(data, len, &w, &h, &n, 3),
                                                    stbi_image_free);
