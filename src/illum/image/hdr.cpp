@@ -48,11 +48,12 @@ Scan scan_rgbe(std::span<const unsigned char> b) {
 
     const std::size_t flat_row = 4 * std::size_t(w);
     for (int y = 0; y < h; ++y) {
-        if (w < 8 || w >= 32768)
-            return b.size() - pos >= flat_row * std::size_t(h - y) ? Scan::Complete : Scan::Truncated;
+        // Flat data: stb then reads the whole image (all h rows, from pixel 0 again) from this position on,
+        // even when earlier scanlines were run-length encoded.
+        const Scan flat = b.size() - pos >= flat_row * std::size_t(h) ? Scan::Complete : Scan::Truncated;
+        if (w < 8 || w >= 32768) return flat;
         if (b.size() - pos < 4) return Scan::Truncated;
-        if (b[pos] != 2 || b[pos + 1] != 2 || (b[pos + 2] & 0x80)) // flat from here to the end
-            return b.size() - pos >= flat_row * std::size_t(h - y) ? Scan::Complete : Scan::Truncated;
+        if (b[pos] != 2 || b[pos + 1] != 2 || (b[pos + 2] & 0x80)) return flat;
         pos += 4;
         for (int c = 0; c < 4; ++c)
             for (int x = 0; x < w;) {
