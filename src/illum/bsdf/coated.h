@@ -64,8 +64,10 @@ public:
         : top_(eta), base_(base), max_depth_(max_depth), samples_(samples) {
         using namespace bsdf_detail;
         require(in_range(eta, 1e-3f, 100), name, "eta must be in (0, 100], got " + str(eta));
-        require(max_depth >= 1 && max_depth <= 1000, name, "max_depth must be in [1, 1000], got " + std::to_string(max_depth));
-        require(samples >= 1 && samples <= 1000, name, "samples must be in [1, 1000], got " + std::to_string(samples));
+        require(max_depth >= 1 && max_depth <= 1000, name,
+                "max_depth must be in [1, 1000], got " + std::to_string(max_depth));
+        require(samples >= 1 && samples <= 1000, name,
+                "samples must be in [1, 1000], got " + std::to_string(samples));
     }
     std::uint8_t flags() const override {
         std::uint8_t f = kReflection | kSpecular;
@@ -90,7 +92,8 @@ public:
             Color3 beta = wos->f.rgb * (std::abs(wos->wi.z) / wos->pdf.value);
             Color3 exit_weight = wis->f.rgb * (std::abs(wis->wi.z) / wis->pdf.value);
             Vector3f w = wos->wi; // pointing down, into the layer
-            for (int depth = 0; depth < max_depth_; ++depth) {
+            // depth counts interface events as sample() does: a base and a coat event per iteration.
+            for (int depth = 0; depth < max_depth_; depth += 2) {
                 if (depth > 3 && beta.max_component() < 0.25f) {
                     float q = std::max(0.0f, 1 - beta.max_component());
                     if (r() < q) break;
@@ -147,7 +150,9 @@ public:
             w = s->wi;
             if (!at_base && s->is_transmission()) {
                 if (w.z <= 0) return std::nullopt;
-                std::uint8_t flags = kReflection | (specular ? kSpecular : (has_flag(base_.flags(), kDiffuse) ? kDiffuse : kGlossy));
+                std::uint8_t flags =
+                    kReflection |
+                    (specular ? kSpecular : (has_flag(base_.flags(), kDiffuse) ? kDiffuse : kGlossy));
                 BSDFSample out{flip ? -w : w, Bsdf3(f), SolidAnglePdf(pdf), flags};
                 out.pdf_is_proportional = true;
                 return out;

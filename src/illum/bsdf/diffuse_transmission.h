@@ -15,7 +15,8 @@ public:
     DiffuseTransmissionBxDF(Color3 reflectance, Color3 transmittance) : r_(reflectance), t_(transmittance) {
         using namespace bsdf_detail;
         require(in_range(r_, 0, 1), "diffuse-transmission", "reflectance must be in [0, 1], got " + str(r_));
-        require(in_range(t_, 0, 1), "diffuse-transmission", "transmittance must be in [0, 1], got " + str(t_));
+        require(in_range(t_, 0, 1), "diffuse-transmission",
+                "transmittance must be in [0, 1], got " + str(t_));
         require(in_range(r_ + t_, 0, 1), "diffuse-transmission",
                 "reflectance + transmittance must be <= 1, got " + str(r_ + t_));
         float r = r_.average(), t = t_.average();
@@ -34,7 +35,8 @@ public:
         if ((wo.z < 0) == reflect) wi.z = -wi.z;
         float p = pdf(wo, wi, mode).value;
         if (!(p > 0)) return std::nullopt;
-        return BSDFSample{wi, f(wo, wi, mode), SolidAnglePdf(p), reflect ? kDiffuseReflection : kDiffuseTransmission};
+        return BSDFSample{wi, f(wo, wi, mode), SolidAnglePdf(p),
+                          reflect ? kDiffuseReflection : kDiffuseTransmission};
     }
     SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode) const override {
         if (wo.z == 0 || wi.z == 0) return SolidAnglePdf(0);

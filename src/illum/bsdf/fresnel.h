@@ -95,7 +95,8 @@ struct DielectricFresnel {
     float eta = 1.5f;
     FresnelMode mode = FresnelMode::Exact;
     float operator()(float cos_i) const {
-        return mode == FresnelMode::Exact ? fresnel_dielectric(cos_i, eta) : fresnel_dielectric_schlick(cos_i, eta);
+        return mode == FresnelMode::Exact ? fresnel_dielectric(cos_i, eta)
+                                          : fresnel_dielectric_schlick(cos_i, eta);
     }
 };
 

@@ -69,8 +69,8 @@ MerlTable MerlTable::read(const std::string& path) {
     auto got = in.gcount();
     if (std::size_t(got) != t.data.size() * sizeof(double))
         throw Error("MERL file '" + path + "' is truncated: expected " +
-                    std::to_string(t.data.size() * sizeof(double)) + " bytes of data after the header, found " +
-                    std::to_string(got));
+                    std::to_string(t.data.size() * sizeof(double)) +
+                    " bytes of data after the header, found " + std::to_string(got));
     return t;
 }
 
@@ -117,7 +117,8 @@ MerlBxDF::MerlBxDF(std::shared_ptr<const MerlTable> table) : table_(std::move(ta
     for (int ih = 0; ih < MerlTable::kThetaH; ++ih) {
         std::size_t i = std::size_t(MerlTable::kPhiD) * MerlTable::kThetaD * ih;
         double lum = 0;
-        for (int c = 0; c < 3; ++c) lum += std::max(0.0, d[i + c * std::size_t(MerlTable::kSize)] * kScale[c]) / 3;
+        for (int c = 0; c < 3; ++c)
+            lum += std::max(0.0, d[i + c * std::size_t(MerlTable::kSize)] * kScale[c]) / 3;
         spec[ih] = lum;
         floor = std::min(floor, lum);
     }

@@ -41,7 +41,9 @@ struct MerlTable {
 class MerlBxDF final : public BxDF {
 public:
     explicit MerlBxDF(std::shared_ptr<const MerlTable> table);
-    static MerlBxDF load(const std::string& path) { return MerlBxDF(std::make_shared<MerlTable>(MerlTable::read(path))); }
+    static MerlBxDF load(const std::string& path) {
+        return MerlBxDF(std::make_shared<MerlTable>(MerlTable::read(path)));
+    }
 
     std::uint8_t flags() const override { return kGlossyReflection | kDiffuseReflection; }
     Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode mode) const override;

@@ -6,7 +6,8 @@
 // - Walter, Marschner, Li, Torrance 2007, "Microfacet Models for Refraction through Rough Surfaces"
 //   (Beckmann and GGX D, Smith G1, the reflection/refraction BSDFs).
 // - Heitz 2014, "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs" (anisotropic Λ,
-//   height-correlated G2 = 1 / (1 + Λ(wo) + Λ(wi)), visible normals D_wo(m) = G1(wo) max(0, wo·m) D(m) / cos θo).
+//   height-correlated G2 = 1 / (1 + Λ(wo) + Λ(wi)), visible normals D_wo(m) = G1(wo) max(0, wo·m) D(m) / cos
+//   θo).
 // - Heitz 2018, "Sampling the GGX Distribution of Visible Normals", JCGT 7(4) (GGX VNDF sampling).
 //
 // D (with tan² θm (cos² φm / αx² + sin² φm / αy²) = e):

@@ -16,8 +16,10 @@ public:
     // sigma_degrees: standard deviation of the facet slope angle, in degrees, [0, 90].
     OrenNayarBxDF(Color3 reflectance, float sigma_degrees) : reflectance_(reflectance) {
         using namespace bsdf_detail;
-        require(in_range(reflectance, 0, 1), "oren-nayar", "reflectance must be in [0, 1], got " + str(reflectance));
-        require(in_range(sigma_degrees, 0, 90), "oren-nayar", "sigma must be in [0, 90] degrees, got " + str(sigma_degrees));
+        require(in_range(reflectance, 0, 1), "oren-nayar",
+                "reflectance must be in [0, 1], got " + str(reflectance));
+        require(in_range(sigma_degrees, 0, 90), "oren-nayar",
+                "sigma must be in [0, 90] degrees, got " + str(sigma_degrees));
         float s2 = sqr(sigma_degrees * kPi / 180);
         a_ = 1 - s2 / (2 * (s2 + 0.33f));
         b_ = 0.45f * s2 / (s2 + 0.09f);
@@ -29,7 +31,8 @@ public:
         if (!same_hemisphere(wo, wi)) return {};
         float sin_i = sin_theta(wi), sin_o = sin_theta(wo);
         float max_cos = 0;
-        if (sin_i > 1e-4f && sin_o > 1e-4f) max_cos = std::max(0.0f, (wi.x * wo.x + wi.y * wo.y) / (sin_i * sin_o));
+        if (sin_i > 1e-4f && sin_o > 1e-4f)
+            max_cos = std::max(0.0f, (wi.x * wo.x + wi.y * wo.y) / (sin_i * sin_o));
         // sin α tan β with α = max(θi, θo): the larger angle has the smaller |cos|.
         float cos_i = abs_cos_theta(wi), cos_o = abs_cos_theta(wo);
         float sin_alpha, tan_beta;

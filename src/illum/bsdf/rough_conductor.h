@@ -22,7 +22,8 @@ inline void check_alpha(const char* model, float ax, float ay) {
 
 class RoughConductorBxDF final : public BxDF {
 public:
-    RoughConductorBxDF(MicrofacetDistribution distrib, Fresnel fresnel) : distrib_(distrib), fresnel_(fresnel) {
+    RoughConductorBxDF(MicrofacetDistribution distrib, Fresnel fresnel)
+        : distrib_(distrib), fresnel_(fresnel) {
         using namespace bsdf_detail;
         check_alpha("rough-conductor", distrib.alpha_x(), distrib.alpha_y());
         Color3 e = fresnel.eta;

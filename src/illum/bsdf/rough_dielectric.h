@@ -42,7 +42,8 @@ public:
         float F = fresnel_(dot(wo, wm));
         if (reflect) return Bsdf3(Color3(distrib_.D(wm) * distrib_.G(wo, wi) * F / std::abs(4 * ci * co)));
         float denom = sqr(dot(wi, wm) + dot(wo, wm) / etap) * ci * co;
-        float ft = distrib_.D(wm) * (1 - F) * distrib_.G(wo, wi) * std::abs(dot(wi, wm) * dot(wo, wm) / denom);
+        float ft =
+            distrib_.D(wm) * (1 - F) * distrib_.G(wo, wi) * std::abs(dot(wi, wm) * dot(wo, wm) / denom);
         if (mode == TransportMode::Radiance) ft /= etap * etap;
         return Bsdf3(Color3(ft));
     }

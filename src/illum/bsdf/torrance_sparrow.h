@@ -41,7 +41,8 @@ public:
             sum += w * std::exp(-t * t * inv_two_sigma2_) * std::cos(t) * std::sin(t);
         }
         inv_norm_ = float(1 / (2 * kPiD * sum * h / 3));
-        proposal_ = MicrofacetDistribution(MicrofacetType::Beckmann, std::sqrt(2.0f) * sigma, std::sqrt(2.0f) * sigma);
+        proposal_ = MicrofacetDistribution(MicrofacetType::Beckmann, std::sqrt(2.0f) * sigma,
+                                           std::sqrt(2.0f) * sigma);
         p_spec_ = specular_lobe_probability(kd, ks);
     }
     std::uint8_t flags() const override { return kDiffuseReflection | kGlossyReflection; }
