@@ -129,8 +129,8 @@ std::vector<ParamSpec> alpha_params(double def) {
             distribution_choice()};
 }
 
-const std::string kGoldEtaStr = "0.143119,0.374957,1.44248";
-const std::string kGoldKStr = "3.98316,2.38572,1.60322";
+constexpr const char* kGoldEtaStr = "0.143119,0.374957,1.44248";
+constexpr const char* kGoldKStr = "3.98316,2.38572,1.60322";
 
 // A MERL table tabulated from a GGX gold rough conductor; `synthetic:ALPHA` in place of a file name.
 std::shared_ptr<const MerlTable> synthetic_merl(float alpha) {
