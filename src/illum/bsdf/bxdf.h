@@ -36,7 +36,9 @@ enum BxDFFlags : std::uint8_t {
     kSpecularTransmission = kSpecular | kTransmission,
     kAll = kDiffuse | kGlossy | kSpecular | kReflection | kTransmission,
 };
-constexpr BxDFFlags operator|(BxDFFlags a, BxDFFlags b) { return BxDFFlags(std::uint8_t(a) | std::uint8_t(b)); }
+constexpr BxDFFlags operator|(BxDFFlags a, BxDFFlags b) {
+    return BxDFFlags(std::uint8_t(a) | std::uint8_t(b));
+}
 constexpr bool has_flag(std::uint8_t flags, BxDFFlags f) { return (flags & f) != 0; }
 
 struct BSDFSample {
@@ -87,7 +89,8 @@ public:
         if (wo.z == 0) return {};
         return bxdf_->f(wo, wi, mode);
     }
-    SolidAnglePdf pdf(Vector3f wo_world, Vector3f wi_world, TransportMode mode = TransportMode::Radiance) const {
+    SolidAnglePdf pdf(Vector3f wo_world, Vector3f wi_world,
+                      TransportMode mode = TransportMode::Radiance) const {
         Vector3f wo = to_local(wo_world), wi = to_local(wi_world);
         if (wo.z == 0) return {};
         return bxdf_->pdf(wo, wi, mode);

@@ -13,8 +13,8 @@ namespace illum {
 Image decode_hdr(std::span<const unsigned char> bytes, const std::string& name);
 
 // Encodes run-length compressed RGBE. RGBE holds no negative, NaN or infinite values: negatives and NaN
-// are written as 0 and +inf as the largest float. Relative precision is about 2^-8 of the largest channel.
-// Throws illum::Error for an empty image.
+// are written as 0, and values beyond the RGBE range (2^127, +inf included) as its largest value. Relative
+// precision is about 2^-8 of the largest channel. Throws illum::Error for an empty image.
 std::string encode_hdr(const Image& image);
 
 } // namespace illum

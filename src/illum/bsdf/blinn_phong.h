@@ -1,0 +1,74 @@
+// Blinn-Phong (Blinn 1977, "Models of Light Reflection for Computer Synthesized Pictures") with the
+// normalisation of Ashikhmin & Shirley 2000 ("An Anisotropic Phong BRDF Model", eq. 4 without Fresnel):
+//   f = kd/π + ks (n + 1)/(8π) cos^n θh / (|wi·h| max(|cos θi|, |cos θo|)).
+// Sampling the half vector with pdf (n+1)/(2π) cos^n θh and reflecting (pdf_h / (4 |wo·h|)) gives the
+// specular lobe the weight ks |cos θi| / max(|cos θi|, |cos θo|) <= ks, so with kd + ks <= 1 the albedo is
+// at most 1. Reciprocal.
+#pragma once
+
+#include "illum/bsdf/common.h"
+#include "illum/bsdf/microfacet.h"
+#include "illum/math/warp.h"
+
+namespace illum {
+
+class BlinnPhongBxDF final : public BxDF {
+public:
+    BlinnPhongBxDF(Color3 kd, Color3 ks, float exponent) : kd_(kd), ks_(ks), n_(exponent) {
+        using namespace bsdf_detail;
+        require(in_range(kd, 0, 1), "blinn-phong", "kd must be in [0, 1], got " + str(kd));
+        require(in_range(ks, 0, 1), "blinn-phong", "ks must be in [0, 1], got " + str(ks));
+        require(in_range(kd + ks, 0, 1), "blinn-phong",
+                "kd + ks must be <= 1 for energy conservation, got " + str(kd + ks));
+        require(in_range(exponent, 0, 1e5f), "blinn-phong",
+                "exponent must be in [0, 100000], got " + str(exponent));
+        p_spec_ = specular_lobe_probability(kd, ks);
+    }
+    std::uint8_t flags() const override { return kDiffuseReflection | kGlossyReflection; }
+
+    Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode) const override {
+        if (!same_hemisphere(wo, wi)) return {};
+        Vector3f h = wo + wi;
+        if (length_squared(h) == 0) return Bsdf3(kd_ * kInvPi);
+        h = normalize(h);
+        float ih = abs_dot(wi, h), m = std::max(std::abs(wi.z), std::abs(wo.z));
+        float spec = ih > 0 ? (n_ + 1) / (8 * kPi) * std::pow(std::abs(h.z), n_) / (ih * m) : 0.0f;
+        return Bsdf3(kd_ * kInvPi + ks_ * spec);
+    }
+
+    std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override {
+        if (wo.z == 0) return std::nullopt;
+        Vector3f wi;
+        if (uc < p_spec_) {
+            float c = std::pow(u.x, 1 / (n_ + 1)), s = safe_sqrt(1 - c * c);
+            Vector3f h = spherical_direction(s, c, 2 * kPi * u.y);
+            if (wo.z < 0) h = -h;
+            wi = reflect(wo, h);
+        } else {
+            wi = sample_cosine_hemisphere(u);
+            if (wo.z < 0) wi.z = -wi.z;
+        }
+        if (!same_hemisphere(wo, wi)) return std::nullopt;
+        float p = pdf(wo, wi, mode).value;
+        if (!(p > 0)) return std::nullopt;
+        return BSDFSample{wi, f(wo, wi, mode), SolidAnglePdf(p), kGlossyReflection};
+    }
+
+    SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode) const override {
+        if (!same_hemisphere(wo, wi)) return SolidAnglePdf(0);
+        float pd = std::abs(wi.z) * kInvPi, ps = 0;
+        Vector3f h = wo + wi;
+        if (length_squared(h) > 0) {
+            h = normalize(h);
+            float oh = abs_dot(wo, h);
+            if (oh > 0) ps = (n_ + 1) / (2 * kPi) * std::pow(std::abs(h.z), n_) / (4 * oh);
+        }
+        return SolidAnglePdf(p_spec_ * ps + (1 - p_spec_) * pd);
+    }
+
+private:
+    Color3 kd_, ks_;
+    float n_, p_spec_;
+};
+
+} // namespace illum

@@ -1,0 +1,31 @@
+// Small helpers shared by the reflection models.
+#pragma once
+
+#include <string>
+
+#include "illum/bsdf/bxdf.h"
+#include "illum/util/error.h"
+
+namespace illum {
+
+// Mirror direction of w about the shading normal +z.
+inline Vector3f reflect_z(Vector3f w) { return {-w.x, -w.y, w.z}; }
+
+namespace bsdf_detail {
+// Parameter validation for the model constructors (they throw illum::Error with a clear message).
+inline void require(bool ok, const char* model, const std::string& what) {
+    if (!ok) throw Error(std::string(model) + ": " + what);
+}
+inline bool in_range(float v, float lo, float hi) { return v >= lo && v <= hi; } // false for NaN
+inline bool in_range(Color3 c, float lo, float hi) {
+    return in_range(c.r, lo, hi) && in_range(c.g, lo, hi) && in_range(c.b, lo, hi);
+}
+inline std::string str(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", double(v));
+    return buf;
+}
+inline std::string str(Color3 c) { return str(c.r) + "," + str(c.g) + "," + str(c.b); }
+} // namespace bsdf_detail
+
+} // namespace illum

@@ -1,0 +1,84 @@
+// Cook & Torrance 1982, "A Reflectance Model for Computer Graphics", ACM TOG 1(1): a diffuse and a
+// specular term, R = d Rd + s Rs, with the Beckmann distribution (their eq. 7, α = m the rms slope),
+// the V-cavity geometric attenuation G (eq. 6), and the Fresnel reflectance at the angle between the
+// view and the half vector (eq. 8, exact here, for η + ik; or Schlick):
+//   f = kd/π + ks F(wo·h) D(h) G / (4 cos θo cos θi).
+// The paper writes Rs = F D G / (π (n·l)(n·v)) with D unnormalised (no 1/π); with the normalised D
+// used here (∫ D cos θh dω = 1) the reflection-geometry Jacobian gives the 1/4 of Walter et al. 2007,
+// which makes the specular albedo at most F. Sampling: Beckmann D cos θh half vectors, reflected.
+#pragma once
+
+#include "illum/bsdf/common.h"
+#include "illum/bsdf/fresnel.h"
+#include "illum/bsdf/microfacet.h"
+#include "illum/math/warp.h"
+
+namespace illum {
+
+class CookTorranceBxDF final : public BxDF {
+public:
+    CookTorranceBxDF(Color3 kd, Color3 ks, float m, Fresnel fresnel)
+        : kd_(kd), ks_(ks), fresnel_(fresnel), distrib_(MicrofacetType::Beckmann, m, m) {
+        using namespace bsdf_detail;
+        require(in_range(kd, 0, 1), "cook-torrance", "kd must be in [0, 1], got " + str(kd));
+        require(in_range(ks, 0, 1), "cook-torrance", "ks must be in [0, 1], got " + str(ks));
+        require(in_range(kd + ks, 0, 1), "cook-torrance", "kd + ks must be <= 1, got " + str(kd + ks));
+        require(in_range(m, 1e-3f, 1), "cook-torrance", "roughness m must be in [0.001, 1], got " + str(m));
+        Color3 e = fresnel.eta;
+        require(e.r > 0 && e.g > 0 && e.b > 0, "cook-torrance", "eta must be > 0, got " + str(e));
+        require(in_range(fresnel.k, 0, 1e4f), "cook-torrance", "k must be >= 0, got " + str(fresnel.k));
+        p_spec_ = specular_lobe_probability(kd, ks);
+    }
+    std::uint8_t flags() const override { return kDiffuseReflection | kGlossyReflection; }
+
+    Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode) const override {
+        if (!same_hemisphere(wo, wi)) return {};
+        float co = std::abs(wo.z), ci = std::abs(wi.z);
+        Vector3f h = wo + wi;
+        if (co == 0 || ci == 0 || length_squared(h) == 0) return {};
+        h = normalize(h);
+        if (h.z < 0) h = -h;
+        Vector3f wof = wo.z < 0 ? -wo : wo, wif = wo.z < 0 ? -wi : wi;
+        Color3 F = fresnel_(dot(wof, h));
+        float spec = distrib_.D(h) * vcavity_G(wof, wif, h) / (4 * co * ci);
+        return Bsdf3(kd_ * kInvPi + ks_ * F * spec);
+    }
+
+    std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override {
+        if (wo.z == 0) return std::nullopt;
+        Vector3f wi;
+        if (uc < p_spec_) {
+            Vector3f h = distrib_.sample_wm(wo, u);
+            if (wo.z < 0) h = -h;
+            wi = reflect(wo, h);
+        } else {
+            wi = sample_cosine_hemisphere(u);
+            if (wo.z < 0) wi.z = -wi.z;
+        }
+        if (!same_hemisphere(wo, wi)) return std::nullopt;
+        float p = pdf(wo, wi, mode).value;
+        if (!(p > 0)) return std::nullopt;
+        return BSDFSample{wi, f(wo, wi, mode), SolidAnglePdf(p), kGlossyReflection};
+    }
+
+    SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode) const override {
+        if (!same_hemisphere(wo, wi)) return SolidAnglePdf(0);
+        float pd = std::abs(wi.z) * kInvPi, ps = 0;
+        Vector3f h = wo + wi;
+        if (length_squared(h) > 0) {
+            h = normalize(h);
+            if (h.z < 0) h = -h;
+            float oh = abs_dot(wo, h);
+            if (oh > 0) ps = distrib_.pdf_wm(wo, h) / (4 * oh);
+        }
+        return SolidAnglePdf(p_spec_ * ps + (1 - p_spec_) * pd);
+    }
+
+private:
+    Color3 kd_, ks_;
+    Fresnel fresnel_;
+    MicrofacetDistribution distrib_;
+    float p_spec_ = 0;
+};
+
+} // namespace illum

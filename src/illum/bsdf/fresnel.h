@@ -1,0 +1,115 @@
+// Fresnel reflectance: the exact unpolarised equations for dielectrics and for conductors with a complex
+// index of refraction, and Schlick's approximation.
+//
+// Exact (Born & Wolf, "Principles of Optics", §1.5; Hecht, "Optics", §4.6): with η = n_t/n_i, cos θi,
+// sin² θt = sin² θi / η², the amplitude ratios
+//   r_par  = (η cos θi - cos θt) / (η cos θi + cos θt),   r_perp = (cos θi - η cos θt) / (cos θi + η cos θt)
+// and F = (|r_par|² + |r_perp|²) / 2 for unpolarised light. For a conductor η = n + ik is complex and the
+// same equations hold with complex cos θt = sqrt(1 - sin² θt).
+// Schlick (1994, "An Inexpensive BRDF Model for Physically-based Rendering", eq. 24):
+//   F(θ) = F0 + (1 - F0)(1 - cos θ)^5.
+#pragma once
+
+#include <complex>
+#include <cstdint>
+
+#include "illum/math/vector.h"
+#include "illum/radiometry/color.h"
+
+namespace illum {
+
+// Exact unpolarised Fresnel reflectance of a dielectric interface. eta = n_inside / n_outside, the
+// inside being -z; cos_i < 0 means the light arrives from inside (then η is inverted). Total internal
+// reflection gives 1.
+inline float fresnel_dielectric(float cos_i, float eta) {
+    cos_i = std::clamp(cos_i, -1.0f, 1.0f);
+    if (cos_i < 0) {
+        eta = 1 / eta;
+        cos_i = -cos_i;
+    }
+    float sin2_t = (1 - cos_i * cos_i) / (eta * eta);
+    if (sin2_t >= 1) return 1;
+    float cos_t = safe_sqrt(1 - sin2_t);
+    float r_par = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    float r_perp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    return 0.5f * (r_par * r_par + r_perp * r_perp);
+}
+
+// Exact unpolarised Fresnel reflectance of a conductor of complex relative index eta + i k, for light
+// arriving from outside (|cos_i| is used). With k = 0 and eta >= 1 it equals fresnel_dielectric.
+inline float fresnel_complex(float cos_i, std::complex<float> eta) {
+    using C = std::complex<float>;
+    cos_i = std::clamp(std::abs(cos_i), 0.0f, 1.0f);
+    float sin2_i = 1 - cos_i * cos_i;
+    C sin2_t = sin2_i / (eta * eta);
+    C cos_t = std::sqrt(C(1) - sin2_t);
+    C r_par = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    C r_perp = (C(cos_i) - eta * cos_t) / (C(cos_i) + eta * cos_t);
+    return 0.5f * (std::norm(r_par) + std::norm(r_perp));
+}
+
+inline Color3 fresnel_complex(float cos_i, Color3 eta, Color3 k) {
+    return {fresnel_complex(cos_i, {eta.r, k.r}), fresnel_complex(cos_i, {eta.g, k.g}),
+            fresnel_complex(cos_i, {eta.b, k.b})};
+}
+
+// Schlick's approximation given the reflectance at normal incidence.
+inline float fresnel_schlick(float cos_i, float f0) {
+    float m = std::clamp(1 - std::abs(cos_i), 0.0f, 1.0f);
+    float m2 = m * m;
+    return f0 + (1 - f0) * (m2 * m2 * m);
+}
+inline Color3 fresnel_schlick(float cos_i, Color3 f0) {
+    float m = std::clamp(1 - std::abs(cos_i), 0.0f, 1.0f);
+    float m2 = m * m;
+    return f0 + (Color3(1) - f0) * (m2 * m2 * m);
+}
+
+// Normal-incidence reflectances: ((η-1)/(η+1))² for a dielectric, ((n-1)² + k²)/((n+1)² + k²) for a
+// conductor.
+inline float dielectric_f0(float eta) { return sqr((eta - 1) / (eta + 1)); }
+inline Color3 conductor_f0(Color3 eta, Color3 k) {
+    Color3 k2 = k * k;
+    return ((eta - Color3(1)) * (eta - Color3(1)) + k2) / ((eta + Color3(1)) * (eta + Color3(1)) + k2);
+}
+
+// Schlick for a dielectric seen from either side: from the denser side the angle in the lighter medium
+// (the transmitted one) is used, so that the approximation is symmetric and total internal reflection
+// gives 1.
+inline float fresnel_dielectric_schlick(float cos_i, float eta) {
+    float c = std::clamp(cos_i, -1.0f, 1.0f);
+    float e = c < 0 ? 1 / eta : eta; // n_t / n_i
+    c = std::abs(c);
+    if (e < 1) { // leaving the denser medium: use cos θt
+        float sin2_t = (1 - c * c) / (e * e);
+        if (sin2_t >= 1) return 1;
+        c = std::sqrt(1 - sin2_t);
+    }
+    return fresnel_schlick(c, dielectric_f0(eta));
+}
+
+enum class FresnelMode : std::uint8_t { Exact, Schlick };
+
+// A dielectric interface's Fresnel term, exact or Schlick (value type, 8 bytes).
+struct DielectricFresnel {
+    float eta = 1.5f;
+    FresnelMode mode = FresnelMode::Exact;
+    float operator()(float cos_i) const {
+        return mode == FresnelMode::Exact ? fresnel_dielectric(cos_i, eta)
+                                          : fresnel_dielectric_schlick(cos_i, eta);
+    }
+};
+
+// A conductor's (or, with k = 0, an opaque dielectric's) Fresnel term, exact or Schlick. Light always
+// arrives from outside.
+struct Fresnel {
+    Color3 eta{1.5f}, k{0};
+    FresnelMode mode = FresnelMode::Exact;
+    Color3 f0() const { return conductor_f0(eta, k); }
+    Color3 operator()(float cos_i) const {
+        if (mode == FresnelMode::Schlick) return fresnel_schlick(cos_i, f0());
+        return fresnel_complex(cos_i, eta, k);
+    }
+};
+
+} // namespace illum

@@ -1,0 +1,98 @@
+// A rough dielectric interface (Walter, Marschner, Li, Torrance 2007, "Microfacet Models for Refraction
+// through Rough Surfaces", eqs. 20-21). Outside +z has index 1, inside η. With η' = n_t/n_i along wi
+// (η if wo is outside):
+//   reflection:   f_r = F(wo·h) D(h) G2 / (4 |cos θo| |cos θi|),  h = normalize(wo + wi)
+//   transmission: f_t = (1 - F(wo·h)) D(h) G2 |wi·h| |wo·h| / (|cos θo| |cos θi| (wi·h + wo·h/η')²),
+//                 h = normalize(wo + η' wi) (the generalised half vector, Walter eq. 16),
+// and f_t /= η'² in radiance mode, which makes f(wo,wi)/η_o² = f(wi,wo)/η_i² (generalised
+// reciprocity). Sampling: wm from the visible normals, reflect with probability F, else refract;
+// pdf_t = pdf_wm · |wi·h| / (wi·h + wo·h/η')² (the Jacobian of the refraction map, Walter eq. 17).
+#pragma once
+
+#include "illum/bsdf/common.h"
+#include "illum/bsdf/fresnel.h"
+#include "illum/bsdf/microfacet.h"
+#include "illum/bsdf/rough_conductor.h"
+
+namespace illum {
+
+class RoughDielectricBxDF final : public BxDF {
+public:
+    RoughDielectricBxDF(MicrofacetDistribution distrib, float eta, FresnelMode mode = FresnelMode::Exact)
+        : distrib_(distrib), fresnel_{eta, mode} {
+        using namespace bsdf_detail;
+        check_alpha("rough-dielectric", distrib.alpha_x(), distrib.alpha_y());
+        require(in_range(eta, 1e-3f, 100), "rough-dielectric", "eta must be in (0, 100], got " + str(eta));
+    }
+    std::uint8_t flags() const override { return kGlossyReflection | kGlossyTransmission; }
+    float eta() const { return fresnel_.eta; }
+
+    Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode mode) const override {
+        float co = cos_theta(wo), ci = cos_theta(wi);
+        if (co == 0 || ci == 0) return {};
+        bool reflect = co * ci > 0;
+        float etap = 1;
+        if (!reflect) etap = co > 0 ? fresnel_.eta : 1 / fresnel_.eta;
+        Vector3f wm = wi * etap + wo;
+        if (length_squared(wm) == 0) return {};
+        wm = normalize(wm);
+        if (wm.z < 0) wm = -wm;
+        // Microfacets seen from behind do not contribute.
+        if (dot(wm, wi) * ci < 0 || dot(wm, wo) * co < 0) return {};
+        float F = fresnel_(dot(wo, wm));
+        if (reflect) return Bsdf3(Color3(distrib_.D(wm) * distrib_.G(wo, wi) * F / std::abs(4 * ci * co)));
+        float denom = sqr(dot(wi, wm) + dot(wo, wm) / etap) * ci * co;
+        float ft =
+            distrib_.D(wm) * (1 - F) * distrib_.G(wo, wi) * std::abs(dot(wi, wm) * dot(wo, wm) / denom);
+        if (mode == TransportMode::Radiance) ft /= etap * etap;
+        return Bsdf3(Color3(ft));
+    }
+
+    std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override {
+        if (wo.z == 0) return std::nullopt;
+        Vector3f wm = distrib_.sample_wm(wo, u);
+        Vector3f wof = wo.z < 0 ? -wo : wo;
+        if (dot(wof, wm) <= 0) return std::nullopt;
+        float R = fresnel_(dot(wo, wm)), T = 1 - R;
+        if (uc < R || T <= 0) {
+            Vector3f wi = reflect(wo, wm);
+            if (!same_hemisphere(wo, wi)) return std::nullopt;
+            float pdf = distrib_.pdf_wm(wo, wm) / (4 * abs_dot(wo, wm)) * R;
+            if (!(pdf > 0)) return std::nullopt;
+            return BSDFSample{wi, f(wo, wi, mode), SolidAnglePdf(pdf), kGlossyReflection};
+        }
+        Vector3f wi;
+        float etap;
+        if (!refract(wo, wm, fresnel_.eta, &etap, &wi)) return std::nullopt;
+        if (same_hemisphere(wo, wi) || wi.z == 0) return std::nullopt;
+        float denom = sqr(dot(wi, wm) + dot(wo, wm) / etap);
+        float pdf = distrib_.pdf_wm(wo, wm) * abs_dot(wi, wm) / denom * T;
+        if (!(pdf > 0)) return std::nullopt;
+        BSDFSample s{wi, f(wo, wi, mode), SolidAnglePdf(pdf), kGlossyTransmission};
+        s.eta = etap;
+        return s;
+    }
+
+    SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode) const override {
+        float co = cos_theta(wo), ci = cos_theta(wi);
+        if (co == 0 || ci == 0) return SolidAnglePdf(0);
+        bool reflect = co * ci > 0;
+        float etap = 1;
+        if (!reflect) etap = co > 0 ? fresnel_.eta : 1 / fresnel_.eta;
+        Vector3f wm = wi * etap + wo;
+        if (length_squared(wm) == 0) return SolidAnglePdf(0);
+        wm = normalize(wm);
+        if (wm.z < 0) wm = -wm;
+        if (dot(wm, wi) * ci < 0 || dot(wm, wo) * co < 0) return SolidAnglePdf(0);
+        float R = fresnel_(dot(wo, wm)), T = 1 - R;
+        if (reflect) return SolidAnglePdf(distrib_.pdf_wm(wo, wm) / (4 * abs_dot(wo, wm)) * R);
+        float denom = sqr(dot(wi, wm) + dot(wo, wm) / etap);
+        return SolidAnglePdf(distrib_.pdf_wm(wo, wm) * abs_dot(wi, wm) / denom * T);
+    }
+
+private:
+    MicrofacetDistribution distrib_;
+    DielectricFresnel fresnel_;
+};
+
+} // namespace illum

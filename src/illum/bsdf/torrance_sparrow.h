@@ -1,0 +1,106 @@
+// Torrance & Sparrow 1967, "Theory for Off-Specular Reflection From Roughened Surfaces", JOSA 57(9):
+// V-groove facets whose normals deviate from the mean normal by an angle θm with a Gaussian
+// distribution, D(m) ∝ exp(-θm² / (2σ²)) (their eq. 21 with c² = 1/(2σ²)), the V-groove
+// shadowing/masking term G (their eqs. 25-27, in Blinn's closed form, see vcavity_G), the Fresnel
+// reflectance of a facet, and the specular term in the form with 1/(4 cos θi cos θo) (the facet-to-
+// surface Jacobian of their eq. 14):
+//   f = kd/π + ks F(wo·h) D(h) G / (4 cos θo cos θi).
+// D is normalised numerically (∫ D cos θm dω = 1) at construction. The Fresnel term is the exact
+// conductor/dielectric one with index η + ik (k = 0 for a dielectric such as their polished glass), or
+// Schlick. Sampling: half vectors from a Beckmann D·cos proposal with α = √2 σ (the small-angle match of
+// the Gaussian), reflected; pdf() is that proposal's density, so estimates are unbiased.
+#pragma once
+
+#include "illum/bsdf/common.h"
+#include "illum/bsdf/fresnel.h"
+#include "illum/bsdf/microfacet.h"
+#include "illum/math/warp.h"
+
+namespace illum {
+
+class TorranceSparrowBxDF final : public BxDF {
+public:
+    TorranceSparrowBxDF(Color3 kd, Color3 ks, float sigma_degrees, Fresnel fresnel)
+        : kd_(kd), ks_(ks), fresnel_(fresnel) {
+        using namespace bsdf_detail;
+        require(in_range(kd, 0, 1), "torrance-sparrow", "kd must be in [0, 1], got " + str(kd));
+        require(in_range(ks, 0, 1), "torrance-sparrow", "ks must be in [0, 1], got " + str(ks));
+        require(in_range(kd + ks, 0, 1), "torrance-sparrow", "kd + ks must be <= 1, got " + str(kd + ks));
+        require(in_range(sigma_degrees, 0.1f, 60), "torrance-sparrow",
+                "sigma must be in [0.1, 60] degrees, got " + str(sigma_degrees));
+        Color3 e = fresnel.eta;
+        require(e.r > 0 && e.g > 0 && e.b > 0, "torrance-sparrow", "eta must be > 0, got " + str(e));
+        require(in_range(fresnel.k, 0, 1e4f), "torrance-sparrow", "k must be >= 0, got " + str(fresnel.k));
+        float sigma = sigma_degrees * kPi / 180;
+        inv_two_sigma2_ = 1 / (2 * sigma * sigma);
+        // norm = 2π ∫_0^{π/2} exp(-θ²/(2σ²)) cos θ sin θ dθ by composite Simpson (2048 intervals).
+        const int n = 2048;
+        double h = (kPiD / 2) / n, sum = 0;
+        for (int i = 0; i <= n; ++i) {
+            double t = i * h, w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+            sum += w * std::exp(-t * t * inv_two_sigma2_) * std::cos(t) * std::sin(t);
+        }
+        inv_norm_ = float(1 / (2 * kPiD * sum * h / 3));
+        proposal_ = MicrofacetDistribution(MicrofacetType::Beckmann, std::sqrt(2.0f) * sigma,
+                                           std::sqrt(2.0f) * sigma);
+        p_spec_ = specular_lobe_probability(kd, ks);
+    }
+    std::uint8_t flags() const override { return kDiffuseReflection | kGlossyReflection; }
+
+    float D(Vector3f m) const {
+        if (m.z <= 0) return 0;
+        float t = safe_acos(m.z);
+        return std::exp(-t * t * inv_two_sigma2_) * inv_norm_;
+    }
+
+    Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode) const override {
+        if (!same_hemisphere(wo, wi)) return {};
+        float co = std::abs(wo.z), ci = std::abs(wi.z);
+        Vector3f h = wo + wi;
+        if (co == 0 || ci == 0 || length_squared(h) == 0) return {};
+        h = normalize(h);
+        if (h.z < 0) h = -h;
+        Vector3f wof = wo.z < 0 ? -wo : wo, wif = wo.z < 0 ? -wi : wi;
+        Color3 F = fresnel_(dot(wof, h));
+        float spec = D(h) * vcavity_G(wof, wif, h) / (4 * co * ci);
+        return Bsdf3(kd_ * kInvPi + ks_ * F * spec);
+    }
+
+    std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override {
+        if (wo.z == 0) return std::nullopt;
+        Vector3f wi;
+        if (uc < p_spec_) {
+            Vector3f h = proposal_.sample_wm(wo, u);
+            if (wo.z < 0) h = -h;
+            wi = reflect(wo, h);
+        } else {
+            wi = sample_cosine_hemisphere(u);
+            if (wo.z < 0) wi.z = -wi.z;
+        }
+        if (!same_hemisphere(wo, wi)) return std::nullopt;
+        float p = pdf(wo, wi, mode).value;
+        if (!(p > 0)) return std::nullopt;
+        return BSDFSample{wi, f(wo, wi, mode), SolidAnglePdf(p), kGlossyReflection};
+    }
+
+    SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode) const override {
+        if (!same_hemisphere(wo, wi)) return SolidAnglePdf(0);
+        float pd = std::abs(wi.z) * kInvPi, ps = 0;
+        Vector3f h = wo + wi;
+        if (length_squared(h) > 0) {
+            h = normalize(h);
+            if (h.z < 0) h = -h;
+            float oh = abs_dot(wo, h);
+            if (oh > 0) ps = proposal_.pdf_wm(wo, h) / (4 * oh);
+        }
+        return SolidAnglePdf(p_spec_ * ps + (1 - p_spec_) * pd);
+    }
+
+private:
+    Color3 kd_, ks_;
+    Fresnel fresnel_;
+    float inv_two_sigma2_ = 1, inv_norm_ = 1, p_spec_ = 0;
+    MicrofacetDistribution proposal_;
+};
+
+} // namespace illum
