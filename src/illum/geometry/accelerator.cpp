@@ -100,6 +100,7 @@ std::uint32_t Accelerator::attach(RTCGeometry geom, Record record) {
 
 std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
                                     std::vector<const Light*> lights) {
+    if (mesh->face_normals.size() != mesh->triangle_count()) mesh->finalize();
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                           3 * sizeof(float), mesh->p.size()));

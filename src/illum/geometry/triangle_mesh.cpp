@@ -14,16 +14,23 @@ void TriangleMesh::transform(const Transform& world_from_object) {
     for (auto& m : n) m = normalize(world_from_object(m));
 }
 
-Normal3f TriangleMesh::geometric_normal(std::size_t tri, float b0, float b1, float b2) const {
-    auto v = vertices(tri);
-    Normal3f ng = normalize(Normal3f(cross(v[0] - v[2], v[1] - v[2])));
-    if (!n.empty()) {
-        Normal3f ns = n[indices[3 * tri]] * b0 + n[indices[3 * tri + 1]] * b1 + n[indices[3 * tri + 2]] * b2;
-        ng = face_forward(ng, Vector3f(ns));
-    } else if (flip_normal) {
-        ng = -ng;
+void TriangleMesh::finalize() {
+    face_normals.resize(triangle_count());
+    for (std::size_t tri = 0; tri < triangle_count(); ++tri) {
+        auto v = vertices(tri);
+        Vector3f c = cross(v[0] - v[2], v[1] - v[2]);
+        float len2 = length_squared(c);
+        Normal3f ng = len2 > 0 ? Normal3f(c / std::sqrt(len2)) : Normal3f{0, 0, 1};
+        if (!n.empty()) {
+            // pbrt-v4 turns the geometric normal to the side of the shading normals (their sum over the
+            // vertices stands for the interpolated one, which may differ in sign only on degenerate input).
+            Normal3f ns = n[indices[3 * tri]] + n[indices[3 * tri + 1]] + n[indices[3 * tri + 2]];
+            ng = face_forward(ng, Vector3f(ns));
+        } else if (flip_normal) {
+            ng = -ng;
+        }
+        face_normals[tri] = ng;
     }
-    return ng;
 }
 
 void TriangleMesh::fill_hit(std::uint32_t tri, float b1, float b2, float t, const Ray& ray, SurfaceHit* hit) const {
@@ -35,7 +42,7 @@ void TriangleMesh::fill_hit(std::uint32_t tri, float b1, float b2, float t, cons
     hit->p_error = (abs(Vector3f(p0) * b0) + abs(Vector3f(p1) * b1) + abs(Vector3f(p2) * b2)) * gamma_bound(7);
     hit->t = t;
     hit->wo = normalize(-ray.d);
-    hit->n = geometric_normal(tri, b0, b1, b2);
+    hit->n = face_normals[tri];
 
     Point2f uv0{0, 0}, uv1{1, 0}, uv2{1, 1};
     if (!uv.empty()) {
@@ -74,7 +81,7 @@ ShapeSample TriangleShape::at_barycentrics(float b0, float b1, float b2) const {
     ShapeSample s;
     s.p = barycentric(v[0], v[1], v[2], b0, b1, b2);
     s.p_error = (abs(Vector3f(v[0]) * b0) + abs(Vector3f(v[1]) * b1) + abs(Vector3f(v[2]) * b2)) * gamma_bound(6);
-    s.n = mesh_->geometric_normal(index_, b0, b1, b2);
+    s.n = mesh_->geometric_normal(index_);
     Point2f uv0{0, 0}, uv1{1, 0}, uv2{1, 1};
     if (!mesh_->uv.empty()) {
         uv0 = mesh_->uv[mesh_->indices[3 * index_]];
@@ -92,30 +99,32 @@ ShapeSample TriangleShape::sample_area(Point2f u) const {
     return s;
 }
 
-float TriangleShape::solid_angle(Point3f p) const {
+
+bool TriangleShape::use_spherical_sampling(Point3f p) const {
+    // A cheap planar estimate of the solid angle, Ω ≈ A |cos θ| / d² at the centroid, decides the strategy;
+    // sample() and pdf() decide from the same function, so they always agree.
     auto v = mesh_->vertices(index_);
-    Vector3f a = v[0] - p, b = v[1] - p, c = v[2] - p;
-    if (length_squared(a) == 0 || length_squared(b) == 0 || length_squared(c) == 0) return 0;
-    return spherical_triangle_area(normalize(a), normalize(b), normalize(c));
+    Vector3f e1 = v[1] - v[0], e2 = v[2] - v[0];
+    Vector3f n2 = cross(e1, e2); // |n2| = 2A
+    Vector3f d = Point3f((Vector3f(v[0]) + Vector3f(v[1]) + Vector3f(v[2])) / 3) - p;
+    float d2 = length_squared(d);
+    float omega = 0.5f * std::abs(dot(n2, d)) / (d2 * std::sqrt(d2));
+    return omega >= kMinSphericalSolidAngle && omega <= kMaxSphericalSolidAngle;
 }
 
 std::optional<ShapeSample> TriangleShape::sample(const ShapeSampleContext& ctx, Point2f u) const {
-    float omega = solid_angle(ctx.p);
-    if (omega < kMinSphericalSolidAngle || omega > kMaxSphericalSolidAngle) return AreaShape::sample(ctx, u);
+    if (!use_spherical_sampling(ctx.p)) return AreaShape::sample(ctx, u);
     float pdf = 0;
     auto b = sample_spherical_triangle(mesh_->vertices(index_), ctx.p, u, &pdf);
-    if (!(pdf > 0)) return std::nullopt;
+    if (!(pdf > 0)) return std::nullopt; // degenerate as seen from p: no solid angle to sample
     ShapeSample s = at_barycentrics(b[0], b[1], b[2]);
-    // Use the exact solid angle for the density so sample() and pdf() agree.
-    s.pdf = 1 / omega;
+    s.pdf = pdf;
     return s;
 }
 
 float TriangleShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit, Normal3f n_hit) const {
-    float omega = solid_angle(ctx.p);
-    if (omega < kMinSphericalSolidAngle || omega > kMaxSphericalSolidAngle)
-        return AreaShape::pdf(ctx, wi, p_hit, n_hit);
-    return 1 / omega;
+    if (!use_spherical_sampling(ctx.p)) return AreaShape::pdf(ctx, wi, p_hit, n_hit);
+    return spherical_triangle_pdf(mesh_->vertices(index_), ctx.p);
 }
 
 } // namespace illum

@@ -88,14 +88,17 @@ bool normalize_in_place(Vec3d& v) {
     v = v * (1 / l);
     return true;
 }
-// Angle between unit vectors, accurate for small and for near-opposite vectors.
-double angle_between(Vec3d x, Vec3d y) {
-    double s = dot(x, y) < 0 ? length(x + y) / 2 : length(y - x) / 2;
-    double ang = 2 * std::asin(std::clamp(s, -1.0, 1.0));
-    return dot(x, y) < 0 ? kPiD - ang : ang;
-}
-
 } // namespace
+
+float spherical_triangle_pdf(const std::array<Point3f, 3>& v, Point3f p) {
+    Vec3d a = to_d(v[0] - p), b = to_d(v[1] - p), c = to_d(v[2] - p);
+    if (!normalize_in_place(a) || !normalize_in_place(b) || !normalize_in_place(c)) return 0;
+    Vec3d n_ab = cross(a, b), n_ca = cross(c, a);
+    if (!normalize_in_place(n_ab) || !normalize_in_place(n_ca)) return 0;
+    double area = 2 * std::atan2(std::abs(dot(a, cross(b, c))), 1 + dot(a, b) + dot(b, c) + dot(c, a));
+    if (!(area > 0) || !std::isfinite(float(1 / area))) return 0;
+    return float(1 / area);
+}
 
 // Arvo's method: pick the sub-triangle area uniformly to find the point C' on arc AC, then pick a point
 // uniformly in cos along arc BC'. Computed in double throughout.
@@ -106,20 +109,25 @@ std::array<float, 3> sample_spherical_triangle(const std::array<Point3f, 3>& v, 
     if (!normalize_in_place(a) || !normalize_in_place(b) || !normalize_in_place(c)) return {};
 
     // Normals of the great circles through each pair of vertices.
-    Vec3d n_ab = cross(a, b), n_bc = cross(b, c), n_ca = cross(c, a);
-    if (!normalize_in_place(n_ab) || !normalize_in_place(n_bc) || !normalize_in_place(n_ca)) return {};
+    Vec3d n_ab = cross(a, b), n_ca = cross(c, a);
+    if (!normalize_in_place(n_ab) || !normalize_in_place(n_ca)) return {};
 
-    // Interior angle at A (the other two enter only through the area).
-    double alpha = angle_between(n_ab, n_ca * -1.0);
+    // Interior angle α at A, between the planes through A, B and A, C: its cosine and sine straight from
+    // the planes' normals (no inverse trigonometry).
+    Vec3d n_ac = n_ca * -1.0;
+    double cos_alpha = std::clamp(dot(n_ab, n_ac), -1.0, 1.0);
+    double sin_alpha = dot(cross(n_ab, n_ac), a); // |n_ab × n_ac| with the sign of the orientation
+    if (sin_alpha < 0) sin_alpha = -sin_alpha;
 
     // The area α + β + γ - π cancels for small triangles; Van Oosterom & Strackee's formula does not.
     double area = 2 * std::atan2(std::abs(dot(a, cross(b, c))), 1 + dot(a, b) + dot(b, c) + dot(c, a));
     if (!(area > 0) || !std::isfinite(float(1 / area))) return {};
 
-    // Arvo's closed form for cos of the arc A C' (his s, t, u, v; cos c = A·B).
+    // Arvo's closed form for cos of the arc A C' (his s, t, u, v; cos c = A·B), with
+    // s = sin(A' - α) and t = cos(A' - α) expanded by the angle-difference identities.
     double area_pct = area * double(u.x);
-    double s = std::sin(area_pct - alpha), t = std::cos(area_pct - alpha);
-    double cos_alpha = std::cos(alpha), sin_alpha = std::sin(alpha);
+    double sin_ap = std::sin(area_pct), cos_ap = std::cos(area_pct);
+    double s = sin_ap * cos_alpha - cos_ap * sin_alpha, t = cos_ap * cos_alpha + sin_ap * sin_alpha;
     double k1 = t - cos_alpha, k2 = s + sin_alpha * dot(a, b);
     double den = (k2 * s + k1 * t) * sin_alpha;
     double cos_bp = den != 0 ? std::clamp(((k2 * t - k1 * s) * cos_alpha - k2) / den, -1.0, 1.0) : 1.0;

@@ -39,7 +39,10 @@ std::array<float, 3> sample_uniform_triangle(Point2f u);
 // triangle and sets *pdf (per steradian); pdf 0 when the triangle is degenerate as seen from p.
 std::array<float, 3> sample_spherical_triangle(const std::array<Point3f, 3>& v, Point3f p, Point2f u,
                                                float* pdf);
-// The solid angle of the triangle seen from p (Van Oosterom & Strackee 1983).
+// The solid angle of the spherical triangle with unit vertices a, b, c (Van Oosterom & Strackee 1983).
 float spherical_triangle_area(Vector3f a, Vector3f b, Vector3f c);
+// The density 1/Ω of sample_spherical_triangle, computed exactly as the sampler does (the two agree to
+// the bit); 0 when the triangle is degenerate as seen from p.
+float spherical_triangle_pdf(const std::array<Point3f, 3>& v, Point3f p);
 
 } // namespace illum

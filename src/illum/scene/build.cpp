@@ -218,6 +218,7 @@ private:
     void add_mesh(const ShapeDesc& s, std::unique_ptr<TriangleMesh> mesh) {
         mesh->flip_normal = s.reverse_orientation != s.world_from_object.swaps_handedness();
         mesh->transform(s.world_from_object);
+        mesh->finalize();
         std::vector<const Light*> tri_lights;
         if (auto e = area_light_of(s)) {
             for (std::uint32_t t = 0; t < mesh->triangle_count(); ++t) {
