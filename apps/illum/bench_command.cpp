@@ -82,11 +82,11 @@ void add_bench_command(CLI::App& app) {
     auto args = std::make_shared<BenchArgs>();
     CLI::App* cmd = app.add_subcommand("bench", "Measure ray and sample throughput (default: the built-in Cornell box)");
     cmd->add_option("scene", args->scene, "Scene file (.pbrt); omit for the built-in Cornell box");
-    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
-    cmd->add_option("--spp", args->spp, "Samples per pixel of the path-traced render")->check(CLI::PositiveNumber);
+    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(positive_integer());
+    cmd->add_option("--spp", args->spp, "Samples per pixel of the path-traced render")->check(positive_integer());
     cmd->add_option("--resolution", args->resolution, "Film resolution WIDTHxHEIGHT");
     cmd->add_option("--rays", args->rays, "Number of incoherent rays for the raw Embree rate")
-        ->check(CLI::PositiveNumber);
+        ->check(positive_integer());
     cmd->add_flag("--json", args->json, "Print the figures as JSON");
     cmd->callback([args] { run(*args); });
 }

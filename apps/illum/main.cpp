@@ -21,9 +21,17 @@ int main(int argc, char** argv) {
             // No subcommand: render the built-in scene, as `illum render` does.
             return app.get_subcommand("render")->parse(std::vector<std::string>{}), 0;
         }
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::RuntimeError& e) {
+        return e.get_exit_code(); // a command that reports its own failure (a failed audit)
     } catch (const CLI::ParseError& e) {
-        int code = app.exit(e);
-        return code == 0 ? 0 : 2;
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 2;
     } catch (const illum::Error& e) {
         fmt::print(stderr, "error: {}\n", e.what());
         return 2;

@@ -157,10 +157,10 @@ void add_render_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("render", "Render a pbrt-v4 scene (default: the built-in Cornell box)");
     cmd->add_option("scene", args->scene, "Scene file (.pbrt); omit for the built-in Cornell box");
     cmd->add_option("-o,--output", args->outputs, "Output image(s): .exr, .pfm, .hdr (linear) or .png (tone mapped)");
-    cmd->add_option("--spp", args->spp, "Samples per pixel (default: the scene's)")->check(CLI::PositiveNumber);
+    cmd->add_option("--spp", args->spp, "Samples per pixel (default: the scene's)")->check(positive_integer());
     cmd->add_option("--time", args->time, "Render whole passes until this many seconds are spent")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
+        ->check(positive_number());
+    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(positive_integer());
     cmd->add_option("--seed", args->seed, "Seed of the sample sequences");
     cmd->add_option("--integrator", args->integrator, "path, direct, albedo or normal (default: the scene's)");
     cmd->add_option("--max-depth", args->max_depth, "Maximum number of scattering events (default: the scene's)")

@@ -1,0 +1,170 @@
+// End-to-end runs of the illum executable (DESIGN.md §4.5): the built-in scene renders; bad input gives a
+// one-line error and a non-zero exit, and leaves existing outputs untouched; the same seed gives the same
+// bytes whatever the thread count.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+    int exit_code = -1;
+    std::string out, err;
+};
+
+// Runs illum with the arguments (a shell-quoted string) and captures stdout and stderr.
+CliRun illum(const std::string& args, const fs::path& dir) {
+    fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+    std::string cmd = "cd '" + dir.string() + "' && '" + ILLUM_CLI_PATH + "' " + args + " > '" + out.string() +
+                      "' 2> '" + err.string() + "' < /dev/null";
+    int status = std::system(cmd.c_str());
+    CliRun r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    auto slurp = [](const fs::path& p) {
+        std::ifstream in(p);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        return ss.str();
+    };
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+}
+
+std::string read_bytes(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+void write_text(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+int count_lines(const std::string& s) {
+    int n = 0;
+    for (char c : s) n += c == '\n';
+    return n;
+}
+
+class Cli : public testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("illum-cli-" + std::to_string(::getpid()) + "-" +
+                                            testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    // A one-line error on stderr, `error: ...` containing `phrase`, and exit code 2.
+    void expect_error(const CliRun& r, const std::string& phrase) {
+        EXPECT_EQ(r.exit_code, 2) << r.err;
+        EXPECT_EQ(count_lines(r.err), 1) << r.err;
+        EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find(phrase), std::string::npos) << "expected \"" << phrase << "\" in: " << r.err;
+    }
+    fs::path dir_;
+};
+
+TEST_F(Cli, VersionAndHelp) {
+    CliRun v = illum("--version", dir_);
+    EXPECT_EQ(v.exit_code, 0);
+    EXPECT_NE(v.out.find("illum " ILLUM_VERSION), std::string::npos) << v.out;
+    for (const char* sub : {"render", "bench", "brdf", "diff"}) {
+        CliRun h = illum(std::string(sub) + " --help", dir_);
+        EXPECT_EQ(h.exit_code, 0) << sub;
+        EXPECT_NE(h.out.find("Usage"), std::string::npos) << sub << ": " << h.out;
+    }
+}
+
+TEST_F(Cli, BuiltInSceneRendersToEveryFormat) {
+    CliRun r = illum("render --resolution 32x32 --spp 2 -o a.png -o a.exr -o a.pfm -o a.hdr --stats s.json --quiet", dir_);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* f : {"a.png", "a.exr", "a.pfm", "a.hdr", "s.json"}) EXPECT_GT(fs::file_size(dir_ / f), 100u) << f;
+    auto stats = nlohmann::json::parse(read_bytes(dir_ / "s.json"));
+    for (const char* key : {"seconds", "samples", "rays", "rays_per_second", "threads", "version", "spp"})
+        EXPECT_TRUE(stats.contains(key)) << key;
+    EXPECT_EQ(stats["spp"], 2);
+    EXPECT_EQ(stats["samples"], 32 * 32 * 2);
+    // No temporary files are left behind.
+    for (auto& e : fs::directory_iterator(dir_))
+        EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+TEST_F(Cli, DefaultOutputIsTheFilmFileName) {
+    // Without -o the image goes to the film's file name, as in pbrt: cornell-box.png for the built-in scene.
+    CliRun small = illum("render --resolution 16x16 --spp 1 --quiet", dir_);
+    EXPECT_EQ(small.exit_code, 0) << small.err;
+    EXPECT_TRUE(fs::exists(dir_ / "cornell-box.png"));
+}
+
+TEST_F(Cli, SameSeedSameBytesWhateverTheThreadCount) {
+    CliRun r1 = illum("render --resolution 64x48 --spp 4 --seed 7 --threads 1 -o t1.exr --quiet", dir_);
+    CliRun r2 = illum("render --resolution 64x48 --spp 4 --seed 7 --threads 2 -o t2.exr --quiet", dir_);
+    CliRun r3 = illum("render --resolution 64x48 --spp 4 --seed 8 --threads 2 -o t3.exr --quiet", dir_);
+    ASSERT_EQ(r1.exit_code, 0) << r1.err;
+    ASSERT_EQ(r2.exit_code, 0) << r2.err;
+    ASSERT_EQ(r3.exit_code, 0) << r3.err;
+    EXPECT_EQ(read_bytes(dir_ / "t1.exr"), read_bytes(dir_ / "t2.exr"));
+    EXPECT_NE(read_bytes(dir_ / "t1.exr"), read_bytes(dir_ / "t3.exr")) << "the seed changes the image";
+}
+
+TEST_F(Cli, MissingSceneFile) {
+    expect_error(illum("render nowhere.pbrt -o x.exr", dir_), "nowhere.pbrt");
+    EXPECT_FALSE(fs::exists(dir_ / "x.exr"));
+}
+
+TEST_F(Cli, UnknownOutputExtension) {
+    write_text(dir_ / "x.xyz", "keep me");
+    expect_error(illum("render --resolution 8x8 --spp 1 -o x.xyz", dir_), ".xyz");
+    EXPECT_EQ(read_bytes(dir_ / "x.xyz"), "keep me");
+}
+
+TEST_F(Cli, BadSampleCounts) {
+    for (const char* spp : {"0", "abc", "-3", "1.5"}) {
+        expect_error(illum(std::string("render --resolution 8x8 --spp ") + spp + " -o x.exr", dir_),
+                     std::string("--spp: must be a positive whole number, not \"") + spp + "\"");
+        EXPECT_FALSE(fs::exists(dir_ / "x.exr"));
+    }
+}
+
+TEST_F(Cli, UnwritableOutputPath) {
+    expect_error(illum("render --resolution 8x8 --spp 1 -o /nonexistent/dir/x.exr", dir_), "/nonexistent/dir");
+    fs::create_directory(dir_ / "adir");
+    expect_error(illum("render --resolution 8x8 --spp 1 -o adir", dir_), "adir");
+}
+
+TEST_F(Cli, FailedRenderLeavesExistingOutputUntouched) {
+    ASSERT_EQ(illum("render --resolution 16x16 --spp 1 -o keep.exr --quiet", dir_).exit_code, 0);
+    std::string before = read_bytes(dir_ / "keep.exr");
+    write_text(dir_ / "bad.pbrt", "WorldBegin\nShape \"sphere\" \"float radius\" [1]\nShape \"teapot\"\n");
+    expect_error(illum("render bad.pbrt -o keep.exr", dir_), "bad.pbrt:3:1: unknown shape type \"teapot\"");
+    write_text(dir_ / "syntax.pbrt", "WorldBegin\nShape \"sphere\" \"float radius\" [1\n");
+    CliRun r = illum("render syntax.pbrt -o keep.exr", dir_);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("syntax.pbrt:"), std::string::npos) << r.err;
+    EXPECT_EQ(read_bytes(dir_ / "keep.exr"), before);
+}
+
+TEST_F(Cli, SceneErrorsNameFileLineColumn) {
+    write_text(dir_ / "m.pbrt", "WorldBegin\n\nMaterial \"plastic-ish\"\nShape \"sphere\"\n");
+    expect_error(illum("render m.pbrt -o x.exr", dir_), "m.pbrt:3:1: unknown material type \"plastic-ish\"");
+    write_text(dir_ / "nan.pbrt", "Translate 0 nan 0\nWorldBegin\n");
+    CliRun r = illum("render nan.pbrt -o x.exr", dir_);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("nan.pbrt:1:"), std::string::npos) << r.err;
+    write_text(dir_ / "idx.pbrt",
+               "WorldBegin\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 5]\n");
+    expect_error(illum("render idx.pbrt -o x.exr", dir_), "idx.pbrt:2:");
+}
+
+} // namespace
