@@ -118,6 +118,16 @@ TEST_F(Cli, SameSeedSameBytesWhateverTheThreadCount) {
     EXPECT_NE(read_bytes(dir_ / "t1.exr"), read_bytes(dir_ / "t3.exr")) << "the seed changes the image";
 }
 
+TEST_F(Cli, TimeBudgetRendersWholePasses) {
+    CliRun r = illum("render --resolution 32x32 --time 0.3 -o t.exr --stats t.json --quiet", dir_);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    auto stats = nlohmann::json::parse(read_bytes(dir_ / "t.json"));
+    int spp = stats["spp"];
+    EXPECT_GE(spp, 1);
+    EXPECT_EQ(stats["samples"], 32 * 32 * spp) << "whole passes only";
+    EXPECT_GE(double(stats["seconds"]), 0.3);
+}
+
 TEST_F(Cli, MissingSceneFile) {
     expect_error(illum("render nowhere.pbrt -o x.exr", dir_), "nowhere.pbrt");
     EXPECT_FALSE(fs::exists(dir_ / "x.exr"));

@@ -48,6 +48,9 @@ AttributeEnd
 }
 
 void expect_radiance(const RenderResult& r, double expected, const char* what, double rel_float = 2e-5) {
+    auto g = pixel_mean(r.image, 1);
+    std::printf("%-32s expected %.6g, measured %.6g +- %.2g (%+.4f%%)\n", what, expected, g.mean, g.standard_error,
+                100 * (g.mean / expected - 1));
     for (int c = 0; c < 3; ++c) {
         auto m = pixel_mean(r.image, c);
         double tol = kSigmas * m.standard_error + rel_float * expected;
@@ -84,6 +87,7 @@ TEST(Radiometry, RuleOfFive) {
         double e_point = point.image.channel_mean().g, e_disk = pixel_mean(disk.image, 1).mean;
         EXPECT_NEAR(e_point, intensity / (h * h) / kPiD, 1e-5 * e_point) << "a point source is exact";
         double ratio = e_disk / e_point, expected_ratio = h * h / (r * r + h * h);
+        std::printf("rule of five h=%gr: E_disk/E_point %.5f (closed form %.5f)\n", h / r, ratio, expected_ratio);
         EXPECT_NEAR(ratio, expected_ratio, kSigmas * pixel_mean(disk.image, 1).standard_error / e_point + 1e-4);
         if (h >= 5 * r) EXPECT_GT(ratio, 0.96) << "point approximation within 4% beyond five radii";
         else EXPECT_LT(ratio, 0.6) << "and far off at one radius";

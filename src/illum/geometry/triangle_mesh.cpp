@@ -70,6 +70,13 @@ void TriangleMesh::fill_hit(std::uint32_t tri, float b1, float b2, float t, cons
     }
 }
 
+TriangleShape::TriangleShape(const TriangleMesh* mesh, std::uint32_t index) : mesh_(mesh), index_(index) {
+    auto v = mesh_->vertices(index_);
+    area_normal_ = cross(v[1] - v[0], v[2] - v[0]);
+    area_ = 0.5f * length(area_normal_);
+    centroid_ = Point3f((Vector3f(v[0]) + Vector3f(v[1]) + Vector3f(v[2])) / 3);
+}
+
 Bounds3f TriangleShape::bounds() const {
     Bounds3f b;
     for (auto& v : mesh_->vertices(index_)) b.extend(v);
@@ -95,7 +102,7 @@ ShapeSample TriangleShape::at_barycentrics(float b0, float b1, float b2) const {
 ShapeSample TriangleShape::sample_area(Point2f u) const {
     auto b = sample_uniform_triangle(u);
     ShapeSample s = at_barycentrics(b[0], b[1], b[2]);
-    s.pdf = 1 / area();
+    s.pdf = 1 / area_;
     return s;
 }
 
@@ -103,12 +110,9 @@ ShapeSample TriangleShape::sample_area(Point2f u) const {
 bool TriangleShape::use_spherical_sampling(Point3f p) const {
     // A cheap planar estimate of the solid angle, Ω ≈ A |cos θ| / d² at the centroid, decides the strategy;
     // sample() and pdf() decide from the same function, so they always agree.
-    auto v = mesh_->vertices(index_);
-    Vector3f e1 = v[1] - v[0], e2 = v[2] - v[0];
-    Vector3f n2 = cross(e1, e2); // |n2| = 2A
-    Vector3f d = Point3f((Vector3f(v[0]) + Vector3f(v[1]) + Vector3f(v[2])) / 3) - p;
+    Vector3f d = centroid_ - p;
     float d2 = length_squared(d);
-    float omega = 0.5f * std::abs(dot(n2, d)) / (d2 * std::sqrt(d2));
+    float omega = 0.5f * std::abs(dot(area_normal_, d)) / (d2 * std::sqrt(d2));
     return omega >= kMinSphericalSolidAngle && omega <= kMaxSphericalSolidAngle;
 }
 

@@ -44,9 +44,10 @@ struct TriangleMesh {
 // uniform).
 class TriangleShape final : public AreaShape {
 public:
-    TriangleShape(const TriangleMesh* mesh, std::uint32_t index) : mesh_(mesh), index_(index) {}
+    // The mesh must be in world space already (its vertices do not change afterwards).
+    TriangleShape(const TriangleMesh* mesh, std::uint32_t index);
 
-    float area() const override { return mesh_->triangle_area(index_); }
+    float area() const override { return area_; }
     Bounds3f bounds() const override;
     ShapeSample sample_area(Point2f u) const override;
     std::optional<ShapeSample> sample(const ShapeSampleContext& ctx, Point2f u) const override;
@@ -64,6 +65,9 @@ private:
     ShapeSample at_barycentrics(float b0, float b1, float b2) const;
     const TriangleMesh* mesh_;
     std::uint32_t index_;
+    float area_;
+    Point3f centroid_;
+    Vector3f area_normal_; // (p1 - p0) × (p2 - p0): twice the area along the normal
 };
 
 } // namespace illum
