@@ -10,6 +10,9 @@
 #include <fmt/core.h>
 
 #include "commands.h"
+#include "illum/analysis/gallery.h"
+#include "illum/image/image_io.h"
+#include "illum/render/renderer.h"
 #include "illum/analysis/albedo.h"
 #include "illum/analysis/audit.h"
 #include "illum/bsdf/conductor.h"
@@ -207,8 +210,46 @@ void add_brdf_command(CLI::App& app) {
         if (!ok) throw CLI::RuntimeError(1);
     });
 
+    struct GalleryOptions {
+        std::string output = "gallery.png";
+        int spp = 256;
+        std::string resolution = "1200x600";
+        int threads = 0;
+        bool quiet = false;
+    };
+    auto gal = std::make_shared<GalleryOptions>();
+    CLI::App* gallery = brdf->add_subcommand("gallery", "render one sphere per model (default parameters) in a grid");
+    gallery->add_option("-o,--output", gal->output, "output image (.png tone mapped; .exr/.pfm/.hdr linear)");
+    gallery->add_option("--spp", gal->spp, "samples per pixel")->check(positive_integer());
+    gallery->add_option("--resolution", gal->resolution, "WIDTHxHEIGHT");
+    gallery->add_option("--threads", gal->threads, "worker threads (default: all)")->check(positive_integer());
+    gallery->add_flag("-q,--quiet", gal->quiet, "no progress");
+    gallery->callback([gal] {
+        int w = 0, h = 0;
+        if (std::sscanf(gal->resolution.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0)
+            throw Error("--resolution \"" + gal->resolution + "\" is not WIDTHxHEIGHT");
+        if (!is_supported_output_extension(gal->output))
+            throw Error("cannot write \"" + gal->output + "\": unknown image extension \"" +
+                        image_extension(gal->output) + "\" (use .exr, .pfm, .hdr or .png)");
+        auto scene = make_gallery_scene(w, h);
+        auto integrator = make_integrator("path", *scene, scene->request.max_depth);
+        RenderOptions ro;
+        ro.spp = gal->spp;
+        ro.threads = gal->threads;
+        ro.quiet = gal->quiet;
+        RenderResult r = render(*scene, *integrator, ro);
+        WriteOptions wo;
+        wo.tonemap = ToneMap::Aces;
+        write_image(r.image, gal->output, wo);
+        if (!gal->quiet) {
+            fmt::print("models, left to right and top to bottom:\n");
+            for (const auto& e : gallery_entries()) fmt::print("  {}\n", e.model);
+            fmt::print("wrote {}\n", gal->output);
+        }
+    });
+
     CLI::App* fres = brdf->add_subcommand("fresnel", "exact Fresnel against Schlick's approximation over θ");
-    fres->add_option("--eta", opt->eta, "dielectric index of refraction")->check(CLI::PositiveNumber);
+    fres->add_option("--eta", opt->eta, "dielectric index of refraction")->check(positive_number());
     fres->add_option("--metal", opt->metal, "conductor: gold, or n,k for one wavelength");
     fres->callback([opt] {
         Color3 n = kGoldEta, k = kGoldK;
