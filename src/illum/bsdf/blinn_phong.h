@@ -7,6 +7,7 @@
 #pragma once
 
 #include "illum/bsdf/common.h"
+#include "illum/bsdf/glossy_diffuse_sampling.h"
 #include "illum/bsdf/microfacet.h"
 #include "illum/math/warp.h"
 
@@ -37,34 +38,22 @@ public:
     }
 
     std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override {
-        if (wo.z == 0) return std::nullopt;
-        Vector3f wi;
-        if (uc < p_spec_) {
-            float c = std::pow(u.x, 1 / (n_ + 1)), s = safe_sqrt(1 - c * c);
-            Vector3f h = spherical_direction(s, c, 2 * kPi * u.y);
-            if (wo.z < 0) h = -h;
-            wi = reflect(wo, h);
-        } else {
-            wi = sample_cosine_hemisphere(u);
-            if (wo.z < 0) wi.z = -wi.z;
-        }
-        if (!same_hemisphere(wo, wi)) return std::nullopt;
-        float p = pdf(wo, wi, mode).value;
-        if (!(p > 0)) return std::nullopt;
-        return BSDFSample{wi, f(wo, wi, mode), SolidAnglePdf(p), kGlossyReflection};
+        return sample_glossy_diffuse(*this, HalfVectorLobe{n_}, p_spec_, wo, uc, u, mode);
     }
 
     SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode) const override {
-        if (!same_hemisphere(wo, wi)) return SolidAnglePdf(0);
-        float pd = std::abs(wi.z) * kInvPi, ps = 0;
-        Vector3f h = wo + wi;
-        if (length_squared(h) > 0) {
-            h = normalize(h);
-            float oh = abs_dot(wo, h);
-            if (oh > 0) ps = (n_ + 1) / (2 * kPi) * std::pow(std::abs(h.z), n_) / (4 * oh);
-        }
-        return SolidAnglePdf(p_spec_ * ps + (1 - p_spec_) * pd);
+        return SolidAnglePdf(glossy_diffuse_pdf(HalfVectorLobe{n_}, p_spec_, wo, wi));
     }
+
+    // The half-vector lobe p_h(h) = (n + 1)/(2π) cos^n θh, sampled by cos θh = u^(1/(n+1)).
+    struct HalfVectorLobe {
+        float n;
+        Vector3f sample_wm(Vector3f, Point2f u) const {
+            float c = std::pow(u.x, 1 / (n + 1)), s = safe_sqrt(1 - c * c);
+            return spherical_direction(s, c, 2 * kPi * u.y);
+        }
+        float pdf_wm(Vector3f, Vector3f h) const { return (n + 1) / (2 * kPi) * std::pow(std::abs(h.z), n); }
+    };
 
 private:
     Color3 kd_, ks_;

@@ -1,5 +1,7 @@
 #include "illum/bsdf/merl.h"
 
+#include "illum/bsdf/glossy_diffuse_sampling.h"
+
 #include <cstdint>
 #include <fstream>
 
@@ -155,33 +157,11 @@ Bsdf3 MerlBxDF::f(Vector3f wo, Vector3f wi, TransportMode) const {
 }
 
 std::optional<BSDFSample> MerlBxDF::sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const {
-    if (wo.z == 0) return std::nullopt;
-    Vector3f wi;
-    if (uc < p_lobe_) {
-        Vector3f wm = lobe_.sample_wm(wo, u);
-        if (wo.z < 0) wm = -wm;
-        wi = reflect(wo, wm);
-    } else {
-        wi = sample_cosine_hemisphere(u);
-        if (wo.z < 0) wi.z = -wi.z;
+        return sample_glossy_diffuse(*this, lobe_, p_lobe_, wo, uc, u, mode);
     }
-    if (!same_hemisphere(wo, wi)) return std::nullopt;
-    float p = pdf(wo, wi, mode).value;
-    if (!(p > 0)) return std::nullopt;
-    return BSDFSample{wi, f(wo, wi, mode), SolidAnglePdf(p), kGlossyReflection};
-}
 
 SolidAnglePdf MerlBxDF::pdf(Vector3f wo, Vector3f wi, TransportMode) const {
-    if (!same_hemisphere(wo, wi)) return SolidAnglePdf(0);
-    float pl = 0;
-    Vector3f h = wo + wi;
-    if (length_squared(h) > 0) {
-        h = normalize(h);
-        if (h.z < 0) h = -h;
-        float oh = abs_dot(wo, h);
-        if (oh > 0) pl = lobe_.pdf_wm(wo, h) / (4 * oh);
+        return SolidAnglePdf(glossy_diffuse_pdf(lobe_, p_lobe_, wo, wi));
     }
-    return SolidAnglePdf(p_lobe_ * pl + (1 - p_lobe_) * cosine_hemisphere_pdf(std::abs(wi.z)));
-}
 
 } // namespace illum

@@ -7,6 +7,8 @@
 // D_beckmann(h) cos θh), reflected: pdf = D cos θh / (4 |wo·h|).
 #pragma once
 
+#include "illum/bsdf/glossy_diffuse_sampling.h"
+
 #include "illum/bsdf/common.h"
 #include "illum/bsdf/microfacet.h"
 #include "illum/math/warp.h"
@@ -40,33 +42,11 @@ public:
     }
 
     std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override {
-        if (wo.z == 0) return std::nullopt;
-        Vector3f wi;
-        if (uc < p_spec_) {
-            Vector3f h = distrib_.sample_wm(wo, u);
-            if (wo.z < 0) h = -h;
-            wi = reflect(wo, h);
-        } else {
-            wi = sample_cosine_hemisphere(u);
-            if (wo.z < 0) wi.z = -wi.z;
-        }
-        if (!same_hemisphere(wo, wi)) return std::nullopt;
-        float p = pdf(wo, wi, mode).value;
-        if (!(p > 0)) return std::nullopt;
-        return BSDFSample{wi, f(wo, wi, mode), SolidAnglePdf(p), kGlossyReflection};
+        return sample_glossy_diffuse(*this, distrib_, p_spec_, wo, uc, u, mode);
     }
 
     SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode) const override {
-        if (!same_hemisphere(wo, wi)) return SolidAnglePdf(0);
-        float pd = std::abs(wi.z) * kInvPi, ps = 0;
-        Vector3f h = wo + wi;
-        if (length_squared(h) > 0) {
-            h = normalize(h);
-            if (h.z < 0) h = -h;
-            float oh = abs_dot(wo, h);
-            if (oh > 0) ps = distrib_.pdf_wm(wo, h) / (4 * oh);
-        }
-        return SolidAnglePdf(p_spec_ * ps + (1 - p_spec_) * pd);
+        return SolidAnglePdf(glossy_diffuse_pdf(distrib_, p_spec_, wo, wi));
     }
 
 private:
