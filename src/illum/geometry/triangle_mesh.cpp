@@ -108,12 +108,16 @@ ShapeSample TriangleShape::sample_area(Point2f u) const {
 
 
 bool TriangleShape::use_spherical_sampling(Point3f p) const {
-    // A cheap planar estimate of the solid angle, Ω ≈ A |cos θ| / d² at the centroid, decides the strategy;
-    // sample() and pdf() decide from the same function, so they always agree.
+    // A cheap planar estimate of the solid angle, Ω ≈ A |cos θ| / d² at the centroid, decides the strategy
+    // where it is accurate (small Ω); close to the triangle it overshoots (it grows without bound), so there
+    // the exact Ω decides. sample() and pdf() decide from this one function, so they always agree.
     Vector3f d = centroid_ - p;
     float d2 = length_squared(d);
-    float omega = 0.5f * std::abs(dot(area_normal_, d)) / (d2 * std::sqrt(d2));
-    return omega >= kMinSphericalSolidAngle && omega <= kMaxSphericalSolidAngle;
+    float estimate = 0.5f * std::abs(dot(area_normal_, d)) / (d2 * std::sqrt(d2));
+    if (!(estimate >= kMinSphericalSolidAngle)) return false;
+    if (estimate <= 1.0f) return true;
+    float pdf = spherical_triangle_pdf(mesh_->vertices(index_), p);
+    return pdf > 0 && 1 / pdf <= kMaxSphericalSolidAngle;
 }
 
 std::optional<ShapeSample> TriangleShape::sample(const ShapeSampleContext& ctx, Point2f u) const {

@@ -26,6 +26,8 @@ public:
         return {};
     }
 
+    bool signed_values() const override { return pass_ == Pass::Normal; }
+
 private:
     Pass pass_;
 };

@@ -29,6 +29,9 @@ public:
     virtual ~Integrator() = default;
     // The value the film records for this camera ray (radiance in W m^-2 sr^-1 for physical integrators).
     virtual Color3 estimate(const Ray& camera_ray, ThreadContext& tc) const = 0;
+    // Whether estimates may be negative (a signed debug pass); radiance never is, so a negative radiance
+    // estimate is a numerical failure that the render loop drops and counts.
+    virtual bool signed_values() const { return false; }
 
 protected:
     bool intersect(const Ray& ray, SurfaceHit* hit, ThreadContext& tc) const {

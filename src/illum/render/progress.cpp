@@ -24,7 +24,7 @@ std::string format_rate(double r) {
 
 Progress::Progress(std::string label, std::uint64_t total, std::string unit, bool quiet)
     : label_(std::move(label)), unit_(std::move(unit)), total_(total), quiet_(quiet), tty_(isatty(STDERR_FILENO)),
-      start_(std::chrono::steady_clock::now()), last_print_(start_) {}
+      start_(std::chrono::steady_clock::now()) {}
 
 Progress::~Progress() { finish(); }
 
@@ -35,12 +35,13 @@ double Progress::elapsed_seconds() const {
 void Progress::add(std::uint64_t done) {
     done_ += done;
     if (quiet_) return;
-    auto now = std::chrono::steady_clock::now();
-    double since = std::chrono::duration<double>(now - last_print_).count();
-    if (since < (tty_ ? 0.1 : 5.0)) return;
+    std::int64_t now =
+        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start_).count();
+    std::int64_t interval = tty_ ? 100'000'000 : 5'000'000'000;
+    if (now - last_print_ns_.load(std::memory_order_relaxed) < interval) return;
     std::unique_lock lock(mutex_, std::try_to_lock);
     if (!lock.owns_lock()) return;
-    last_print_ = now;
+    last_print_ns_.store(now, std::memory_order_relaxed);
     print(false);
 }
 

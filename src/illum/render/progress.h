@@ -30,7 +30,8 @@ private:
     std::atomic<std::uint64_t> done_{0};
     std::atomic<double> fraction_{-1};
     bool quiet_, tty_, finished_ = false;
-    std::chrono::steady_clock::time_point start_, last_print_;
+    std::chrono::steady_clock::time_point start_;
+    std::atomic<std::int64_t> last_print_ns_{0}; // since start_; read by every worker, so atomic
     std::mutex mutex_;
 };
 

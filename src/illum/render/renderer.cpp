@@ -43,6 +43,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     Sampler prototype(*kind, options.spp > 0 ? options.spp : 1, options.seed);
     tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });
     std::atomic<std::uint64_t> nonfinite{0};
+    const bool reject_negative = !integrator.signed_values();
 
     const bool timed = options.time_budget > 0;
     std::uint64_t pixels = std::uint64_t(w) * h;
@@ -64,7 +65,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                 Ray ray = scene.camera->generate_ray(p_film, tc.sampler.get_2d());
                                 Color3 v = integrator.estimate(ray, tc);
                                 tc.arena.reset();
-                                if (!v.is_finite() || v.has_negative()) {
+                                if (!v.is_finite() || (reject_negative && v.has_negative())) {
                                     ++nonfinite;
                                     v = Color3(0.0f);
                                 }
