@@ -22,9 +22,10 @@ Radiance3 DirectIntegrator::reflected_from(const Light& light, const SurfaceHit&
     }
     if (is_delta(light.type())) return l;
 
-    // BSDF sampling: does the sampled direction reach this light?
+    // BSDF sampling: does the sampled direction reach this light? A delta lobe (the mirror reflection of a
+    // coat over a diffuse base) is counted in full: light sampling cannot produce its direction.
     auto bs = bsdf.sample(hit.wo, u_lobe, u_bsdf);
-    if (!bs || bs->is_specular()) return l;
+    if (!bs) return l;
     Ray ray = hit.spawn_ray(bs->wi);
     SurfaceHit lhit;
     Radiance3 le;
@@ -32,13 +33,16 @@ Radiance3 DirectIntegrator::reflected_from(const Light& light, const SurfaceHit&
     if (intersect(ray, &lhit, tc)) {
         if (lhit.area_light != &light) return l;
         le = light.radiance(lhit, lhit.wo);
-        p_light = light.pdf_li(ctx, bs->wi, &lhit).value;
+        if (!bs->is_specular()) p_light = light.pdf_li(ctx, bs->wi, &lhit).value;
     } else if (light.type() == LightType::Infinite) {
         le = light.le(ray);
-        p_light = light.pdf_li(ctx, bs->wi, nullptr).value;
+        if (!bs->is_specular()) p_light = light.pdf_li(ctx, bs->wi, nullptr).value;
     }
     if (le.is_black()) return l;
-    float w = bs->pdf_is_proportional ? 1.0f : power_heuristic(bs->pdf.value, p_light);
+    // A stochastic (layered) BSDF's sample pdf is not the density pdf() gives; both strategies must weigh
+    // with the same function for the weights to sum to one, so use pdf() here as light sampling does.
+    float p_bsdf = bs->pdf_is_proportional ? bsdf.pdf(hit.wo, bs->wi).value : bs->pdf.value;
+    float w = bs->is_specular() ? 1.0f : power_heuristic(p_bsdf, p_light);
     l += le * (bs->f.rgb * (abs_dot(bs->wi, hit.ns) * w / bs->pdf.value));
     return l;
 }
