@@ -31,8 +31,7 @@ public:
         build_materials();
         for (const ShapeDesc& s : desc_.shapes) build_shape(s);
         for (const LightDesc& l : desc_.lights) build_light(l);
-        if (!desc_.instance_uses.empty())
-            unsupported(desc_.instance_uses.front().loc, "object instancing (ObjectInstance) is ignored");
+        build_instances();
         scene_->warnings.insert(scene_->warnings.begin(), desc_.warnings.begin(), desc_.warnings.end());
         scene_->finalize();
         return std::move(scene_);
@@ -541,6 +540,17 @@ private:
 
     void build_shape(const ShapeDesc& s) {
         if (!s.world_from_object.matrix().is_finite()) throw Error(s.loc, "shape transform is not finite");
+        if (const Param* a = s.params.find("alpha")) {
+            // A constant alpha of 0 removes the shape (pbrt-v4 does the same); other cut-outs are not
+            // supported yet: the shape is rendered opaque.
+            if (a->type == ParamType::Float) {
+                if (s.params.get_float("alpha", 1) <= 0) return;
+                if (s.params.get_float("alpha", 1) < 1) unsupported(a->loc, "partial \"alpha\" is rendered opaque");
+            } else {
+                a->used = true;
+                unsupported(a->loc, "alpha textures (cut-outs) are not supported yet; the shape is opaque");
+            }
+        }
         if (s.type == "trianglemesh") {
             auto mesh = std::make_unique<TriangleMesh>();
             mesh->p = s.params.get_point3s("P");
@@ -620,11 +630,92 @@ private:
             mesh->uv = std::move(data.uvs);
             mesh->indices.assign(data.indices.begin(), data.indices.end());
             add_mesh(s, std::move(mesh));
-        } else if (s.type == "bilinearmesh" || s.type == "cylinder" || s.type == "loopsubdiv" ||
+        } else if (s.type == "bilinearmesh") {
+            // Each bilinear patch (p00, p10, p01, p11) becomes the two triangles (p00, p10, p11) and
+            // (p00, p11, p01), whose normals agree with the patch's dp/du x dp/dv: exact for planar
+            // patches, a two-triangle approximation of curved ones.
+            auto mesh = std::make_unique<TriangleMesh>();
+            mesh->p = s.params.get_point3s("P");
+            auto idx = s.params.get_ints("indices");
+            if (mesh->p.empty()) throw Error(s.loc, "bilinearmesh needs \"point3 P\"");
+            if (idx.empty()) {
+                if (mesh->p.size() != 4) throw Error(s.loc, "bilinearmesh without \"indices\" must have 4 vertices");
+                idx = {0, 1, 2, 3};
+            }
+            if (idx.size() % 4 != 0)
+                throw Error(s.params.find("indices")->loc,
+                            fmt::format("bilinearmesh has {} indices, not a multiple of 4", idx.size()));
+            for (int i : idx)
+                if (i < 0 || std::size_t(i) >= mesh->p.size())
+                    throw Error(s.params.find("indices")->loc,
+                                fmt::format("bilinearmesh index {} is out of range (the mesh has {} vertices)", i,
+                                            mesh->p.size()));
+            for (std::size_t q = 0; q < idx.size(); q += 4) {
+                std::uint32_t a = idx[q], b = idx[q + 1], c = idx[q + 2], d = idx[q + 3];
+                mesh->indices.insert(mesh->indices.end(), {a, b, d, a, d, c});
+            }
+            mesh->n = s.params.get_normals("N");
+            if (!mesh->n.empty() && mesh->n.size() != mesh->p.size())
+                throw Error(s.params.find("N")->loc, "bilinearmesh has a different number of N and P");
+            mesh->uv = s.params.get_point2s("uv");
+            if (!mesh->uv.empty() && mesh->uv.size() != mesh->p.size())
+                throw Error(s.loc, "bilinearmesh has a different number of uv and P");
+            if (mesh->uv.empty() && idx.size() == 4 && mesh->p.size() == 4) mesh->uv = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+            add_mesh(s, std::move(mesh));
+        } else if (s.type == "cylinder") {
+            // Tessellated: 256 segments around, one along z; normals from the exact surface, so shading is
+            // smooth and only the silhouette and the area (0.01% short) are approximate.
+            float r = s.params.get_float("radius", 1), z0 = s.params.get_float("zmin", -1),
+                  z1 = s.params.get_float("zmax", 1), phimax = s.params.get_float("phimax", 360);
+            if (!(r > 0) || !(z1 != z0) || !(phimax > 0 && phimax <= 360))
+                throw Error(s.loc, "cylinder needs radius > 0, zmin != zmax and 0 < phimax <= 360");
+            if (z0 > z1) std::swap(z0, z1);
+            constexpr int kSegments = 256;
+            int n = std::max(3, int(std::ceil(kSegments * phimax / 360)));
+            auto mesh = std::make_unique<TriangleMesh>();
+            float pm = phimax * kPi / 180;
+            for (int i = 0; i <= n; ++i) {
+                float phi = pm * float(i) / float(n), c = std::cos(phi), sn = std::sin(phi);
+                for (int j = 0; j < 2; ++j) {
+                    mesh->p.push_back({r * c, r * sn, j ? z1 : z0});
+                    // Outward, or inward under ReverseOrientation (pbrt-v4's analytic cylinder); given
+                    // as normals, they also fix the emitting side.
+                    float o = s.reverse_orientation ? -1.0f : 1.0f;
+                    mesh->n.push_back(Normal3f(o * c, o * sn, 0));
+                    mesh->uv.push_back({float(i) / float(n), float(j)});
+                }
+            }
+            for (int i = 0; i < n; ++i) {
+                std::uint32_t a = 2 * i, b = 2 * (i + 1), c = a + 1, d = b + 1; // p00 p10 p01 p11
+                mesh->indices.insert(mesh->indices.end(), {a, b, d, a, d, c});
+            }
+            add_mesh(s, std::move(mesh));
+        } else if (s.type == "loopsubdiv" ||
                    s.type == "curve" || s.type == "cone" || s.type == "paraboloid" || s.type == "hyperboloid") {
             unsupported(s.loc, fmt::format("shape \"{}\" is not supported yet and is skipped", s.type));
         } else {
             throw Error(s.loc, fmt::format("unknown shape type \"{}\"", s.type));
+        }
+    }
+
+    // ObjectInstance: flattened, each use copies the definition's shapes under world_from_instance (no
+    // Embree instancing yet: memory grows with the number of uses). Area lights in instances are
+    // ignored, as pbrt-v4 does.
+    void build_instances() {
+        for (const InstanceUse& use : desc_.instance_uses) {
+            auto it = desc_.instances.find(use.name);
+            if (it == desc_.instances.end())
+                throw Error(use.loc, fmt::format("undefined object \"{}\" in ObjectInstance", use.name));
+            if (!use.world_from_instance.matrix().is_finite()) throw Error(use.loc, "instance transform is not finite");
+            for (const ShapeDesc& shape : it->second.shapes) {
+                ShapeDesc copy = shape;
+                copy.world_from_object = use.world_from_instance * shape.world_from_object;
+                if (copy.area_light >= 0) {
+                    unsupported(shape.loc, "area lights in object instances are ignored (as in pbrt-v4)");
+                    copy.area_light = -1;
+                }
+                build_shape(copy);
+            }
         }
     }
 
