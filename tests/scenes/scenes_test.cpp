@@ -42,6 +42,8 @@ const SceneCase kCases[] = {
     {"coffee", 32, {0.12f, 0.05f, 0.05f}},
 };
 
+void PrintTo(const SceneCase& c, std::ostream* os) { *os << c.name; }
+
 Image render_scene(const std::string& name, int spp, std::uint64_t seed, int resolution = 0) {
     SceneDesc desc = parse_pbrt_file(test::shared_dir() + "/scenes/" + name + "/test.pbrt");
     if (resolution > 0) {
