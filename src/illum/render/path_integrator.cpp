@@ -6,8 +6,8 @@ namespace illum {
 
 Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
     Radiance3 l;
-    Color3 beta(1.0f);      // path throughput
-    float eta_scale = 1;    // radiance scaling by refraction, undone for Russian roulette
+    Color3 beta(1.0f);   // path throughput
+    float eta_scale = 1; // radiance scaling by refraction, undone for Russian roulette
     bool specular_bounce = false;
     float prev_bsdf_pdf = 0; // solid-angle pdf of the BSDF sample that made `ray`
     LightSampleContext prev_ctx;
@@ -23,7 +23,8 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
                 if (depth == 0 || specular_bounce) {
                     l += le * beta;
                 } else {
-                    float p_light = scene_.light_sampler.pmf(env) * env->pdf_li(prev_ctx, ray.d, nullptr).value;
+                    float p_light =
+                        scene_.light_sampler.pmf(env) * env->pdf_li(prev_ctx, ray.d, nullptr).value;
                     l += le * beta * power_heuristic(prev_bsdf_pdf, p_light);
                 }
             }

@@ -11,10 +11,10 @@
 #include "illum/bsdf/pbrt_materials.h"
 #include "illum/image/image_io.h"
 #include "illum/light/diffuse_area_light.h"
-#include "illum/radiometry/spectra.h"
-#include "illum/texture/pbrt_textures.h"
 #include "illum/light/light_factory.h"
+#include "illum/radiometry/spectra.h"
 #include "illum/scene/pbrt/ply.h"
+#include "illum/texture/pbrt_textures.h"
 
 namespace illum {
 
@@ -51,7 +51,8 @@ private:
         const EntityDesc& film = desc_.film;
         if (film.type != "rgb" && film.type != "gbuffer" && film.type != "spectral")
             throw Error(film.loc, fmt::format("unknown film type \"{}\"", film.type));
-        if (film.type != "rgb") unsupported(film.loc, fmt::format("film \"{}\" is rendered as \"rgb\"", film.type));
+        if (film.type != "rgb")
+            unsupported(film.loc, fmt::format("film \"{}\" is rendered as \"rgb\"", film.type));
         int w = film.params.get_int("xresolution", 1280), h = film.params.get_int("yresolution", 720);
         if (w <= 0 || h <= 0 || w > 65536 || h > 65536)
             throw Error(film.loc, fmt::format("film resolution {}x{} is out of range", w, h));
@@ -78,20 +79,23 @@ private:
         if (!(focal_distance > 0)) throw Error(c.loc, "camera focaldistance must be positive");
         Screen screen = PerspectiveCamera::default_screen(w, h);
         float frame = c.params.get_float("frameaspectratio", 0);
-        if (frame > 0) screen = frame > 1 ? Screen{-frame, frame, -1, 1} : Screen{-1, 1, -1 / frame, 1 / frame};
+        if (frame > 0)
+            screen = frame > 1 ? Screen{-frame, frame, -1, 1} : Screen{-1, 1, -1 / frame, 1 / frame};
         auto sw = c.params.get_floats("screenwindow");
         if (!sw.empty()) {
-            if (sw.size() != 4) throw Error(c.params.find("screenwindow")->loc, "screenwindow needs 4 values");
+            if (sw.size() != 4)
+                throw Error(c.params.find("screenwindow")->loc, "screenwindow needs 4 values");
             screen = {sw[0], sw[1], sw[2], sw[3]};
         }
         if (c.type == "perspective" || c.type.empty()) {
             float fov = c.params.get_float("fov", 90);
-            if (!(fov > 0 && fov < 180)) throw Error(c.loc, fmt::format("camera fov {} is out of (0, 180)", fov));
-            scene_->camera =
-                std::make_unique<PerspectiveCamera>(world_from_camera, w, h, fov, lens_radius, focal_distance, &screen);
+            if (!(fov > 0 && fov < 180))
+                throw Error(c.loc, fmt::format("camera fov {} is out of (0, 180)", fov));
+            scene_->camera = std::make_unique<PerspectiveCamera>(world_from_camera, w, h, fov, lens_radius,
+                                                                 focal_distance, &screen);
         } else if (c.type == "orthographic") {
-            scene_->camera =
-                std::make_unique<OrthographicCamera>(world_from_camera, w, h, lens_radius, focal_distance, &screen);
+            scene_->camera = std::make_unique<OrthographicCamera>(world_from_camera, w, h, lens_radius,
+                                                                  focal_distance, &screen);
         } else if (c.type == "realistic" || c.type == "spherical") {
             unsupported(c.loc, fmt::format("camera \"{}\" is approximated by a perspective camera", c.type));
             scene_->camera = std::make_unique<PerspectiveCamera>(world_from_camera, w, h, 90.0f);
@@ -124,8 +128,10 @@ private:
         const EntityDesc& s = desc_.sampler;
         r.spp = s.params.get_int("pixelsamples", 16);
         if (r.spp <= 0) throw Error(s.loc, "pixelsamples must be positive");
-        if (s.type == "independent") r.sampler = "independent";
-        else if (s.type == "sobol" || s.type == "zsobol" || s.type == "paddedsobol") r.sampler = "sobol";
+        if (s.type == "independent")
+            r.sampler = "independent";
+        else if (s.type == "sobol" || s.type == "zsobol" || s.type == "paddedsobol")
+            r.sampler = "sobol";
         else if (s.type == "halton" || s.type == "pmj02bn" || s.type == "stratified") {
             unsupported(s.loc, fmt::format("sampler \"{}\" is replaced by \"sobol\"", s.type));
             r.sampler = "sobol";
@@ -134,7 +140,6 @@ private:
         }
     }
 
-
     // ---- spectra, textures and materials ----------------------------------------------------------
 
     // A spectrum parameter as RGB: named (pbrt-v4's metal, glass and illuminant names), blackbody,
@@ -142,16 +147,20 @@ private:
     Color3 spectrum_rgb(const Param& p, bool illuminant) {
         p.used = true;
         if (p.strings.size() == 1 && p.strings[0] == "blackbody") {
-            if (p.numbers.empty() || !(p.numbers[0] > 0)) throw Error(p.loc, "blackbody needs a positive temperature");
+            if (p.numbers.empty() || !(p.numbers[0] > 0))
+                throw Error(p.loc, "blackbody needs a positive temperature");
             return blackbody_rgb(p.numbers[0]);
         }
         SampledSpectrum s;
         if (p.strings.size() == 1 && p.numbers.empty()) {
             if (auto c = named_spectrum_rgb(p.strings[0])) return *c;
             std::string file = p.strings[0];
-            if (!file.empty() && file[0] != '/' && !desc_.base_dir.empty()) file = desc_.base_dir + "/" + file;
+            if (!file.empty() && file[0] != '/' && !desc_.base_dir.empty())
+                file = desc_.base_dir + "/" + file;
             std::ifstream in(file);
-            if (!in) throw Error(p.loc, fmt::format("unknown named spectrum or unreadable file \"{}\"", p.strings[0]));
+            if (!in)
+                throw Error(p.loc,
+                            fmt::format("unknown named spectrum or unreadable file \"{}\"", p.strings[0]));
             std::string line;
             std::vector<double> v;
             while (std::getline(in, line)) {
@@ -161,7 +170,9 @@ private:
                 double x;
                 while (ls >> x) v.push_back(x);
             }
-            if (v.size() < 2 || v.size() % 2) throw Error(p.loc, fmt::format("spectrum file \"{}\" needs (wavelength, value) pairs", p.strings[0]));
+            if (v.size() < 2 || v.size() % 2)
+                throw Error(
+                    p.loc, fmt::format("spectrum file \"{}\" needs (wavelength, value) pairs", p.strings[0]));
             for (std::size_t i = 0; i < v.size(); i += 2) {
                 s.lambda.push_back(v[i]);
                 s.value.push_back(v[i + 1]);
@@ -209,16 +220,21 @@ private:
             if (!c.is_finite()) throw Error(p->loc, fmt::format("\"{}\" is not finite", name));
             return constant_color(c);
         }
-        case ParamType::Float: return constant_color(Color3(e.params.get_float(name, 0)));
-        case ParamType::Spectrum: return constant_color(spectrum_rgb(*p, false));
+        case ParamType::Float:
+            return constant_color(Color3(e.params.get_float(name, 0)));
+        case ParamType::Spectrum:
+            return constant_color(spectrum_rgb(*p, false));
         case ParamType::Texture: {
             std::string t = e.params.get_texture(name);
             if (auto it = color_textures_.find(t); it != color_textures_.end()) return it->second;
             if (float_textures_.count(t))
-                throw Error(p->loc, fmt::format("texture \"{}\" is a float texture; \"{}\" needs a spectrum texture", t, name));
+                throw Error(p->loc,
+                            fmt::format("texture \"{}\" is a float texture; \"{}\" needs a spectrum texture",
+                                        t, name));
             throw Error(p->loc, fmt::format("undefined spectrum texture \"{}\"", t));
         }
-        default: e.params.fail(*p, fmt::format("parameter \"{}\" cannot be of type {}", name, to_string(p->type)));
+        default:
+            e.params.fail(*p, fmt::format("parameter \"{}\" cannot be of type {}", name, to_string(p->type)));
         }
     }
 
@@ -229,7 +245,9 @@ private:
             std::string t = e.params.get_texture(name);
             if (auto it = float_textures_.find(t); it != float_textures_.end()) return it->second;
             if (color_textures_.count(t))
-                throw Error(p->loc, fmt::format("texture \"{}\" is a spectrum texture; \"{}\" needs a float texture", t, name));
+                throw Error(p->loc,
+                            fmt::format("texture \"{}\" is a spectrum texture; \"{}\" needs a float texture",
+                                        t, name));
             throw Error(p->loc, fmt::format("undefined float texture \"{}\"", t));
         }
         float v = e.params.get_float(name, 0);
@@ -247,14 +265,16 @@ private:
             Color3 c = spectrum_rgb(*p, false);
             eta = c.average();
             if (!(p->strings.size() == 1 && p->strings[0].rfind("glass-", 0) == 0))
-                unsupported(p->loc, fmt::format("spectrally varying \"{}\" is rendered with its mean {:.4g}", name, eta));
+                unsupported(p->loc, fmt::format("spectrally varying \"{}\" is rendered with its mean {:.4g}",
+                                                name, eta));
         } else if (p->type == ParamType::Texture) {
             p->used = true;
             unsupported(p->loc, fmt::format("a textured \"{}\" is rendered with {}", name, def));
         } else {
             eta = e.params.get_float(name, def);
         }
-        if (!(eta > 0 && eta <= 100)) throw Error(p->loc, fmt::format("\"{}\" must be in (0, 100], got {}", name, eta));
+        if (!(eta > 0 && eta <= 100))
+            throw Error(p->loc, fmt::format("\"{}\" must be in (0, 100], got {}", name, eta));
         return eta;
     }
 
@@ -270,8 +290,8 @@ private:
     UVMapping mapping(const TextureDesc& t) {
         std::string m = t.params.get_string("mapping", "uv");
         if (m != "uv") unsupported(t.loc, fmt::format("texture mapping \"{}\" is replaced by \"uv\"", m));
-        return {t.params.get_float("uscale", 1), t.params.get_float("vscale", 1), t.params.get_float("udelta", 0),
-                t.params.get_float("vdelta", 0)};
+        return {t.params.get_float("uscale", 1), t.params.get_float("vscale", 1),
+                t.params.get_float("udelta", 0), t.params.get_float("vdelta", 0)};
     }
 
     std::shared_ptr<const Image> load_texture_image(const TextureDesc& t, const std::string& encoding) {
@@ -293,8 +313,10 @@ private:
         // read_image decodes 8-bit images as sRGB; "linear" asks for the raw values, "gamma g" for v^g.
         if (eight_bit && encoding != "sRGB") {
             float gamma = 1;
-            if (encoding.rfind("gamma ", 0) == 0) gamma = std::stof(encoding.substr(6));
-            else if (encoding != "linear") throw Error(t.loc, fmt::format("unknown image encoding \"{}\"", encoding));
+            if (encoding.rfind("gamma ", 0) == 0)
+                gamma = std::stof(encoding.substr(6));
+            else if (encoding != "linear")
+                throw Error(t.loc, fmt::format("unknown image encoding \"{}\"", encoding));
             for (std::size_t i = 0; i < img.pixel_count(); ++i) {
                 Color3& c = img.data()[i];
                 for (int k = 0; k < 3; ++k) {
@@ -312,33 +334,41 @@ private:
     void build_texture(const TextureDesc& t) {
         bool is_float = t.value_type == "float";
         if (!is_float && t.value_type != "spectrum")
-            throw Error(t.loc, fmt::format("texture type must be \"float\" or \"spectrum\", not \"{}\"", t.value_type));
+            throw Error(t.loc, fmt::format("texture type must be \"float\" or \"spectrum\", not \"{}\"",
+                                           t.value_type));
         const ColorTexture* ct = nullptr;
         const FloatTexture* ft = nullptr;
         auto tex_param_f = [&](const char* n, float d) { return float_param(t, n, d); };
         auto tex_param_c = [&](const char* n, Color3 d) { return color_param(t, n, d); };
         if (t.type == "constant") {
-            if (is_float) ft = tex_param_f("value", 1);
-            else ct = tex_param_c("value", Color3(1.0f));
+            if (is_float)
+                ft = tex_param_f("value", 1);
+            else
+                ct = tex_param_c("value", Color3(1.0f));
         } else if (t.type == "scale") {
             const FloatTexture* s = tex_param_f("scale", 1);
-            if (is_float) ft = own_float<ScaleTex<FloatTexture, float>>(tex_param_f("tex", 1), s);
-            else ct = own_color<ScaleTex<ColorTexture, Color3>>(tex_param_c("tex", Color3(1.0f)), s);
+            if (is_float)
+                ft = own_float<ScaleTex<FloatTexture, float>>(tex_param_f("tex", 1), s);
+            else
+                ct = own_color<ScaleTex<ColorTexture, Color3>>(tex_param_c("tex", Color3(1.0f)), s);
         } else if (t.type == "mix") {
             const FloatTexture* a = tex_param_f("amount", 0.5f);
-            if (is_float) ft = own_float<MixTex<FloatTexture, float>>(tex_param_f("tex1", 0), tex_param_f("tex2", 1), a);
+            if (is_float)
+                ft =
+                    own_float<MixTex<FloatTexture, float>>(tex_param_f("tex1", 0), tex_param_f("tex2", 1), a);
             else
                 ct = own_color<MixTex<ColorTexture, Color3>>(tex_param_c("tex1", Color3(0.0f)),
-                                                              tex_param_c("tex2", Color3(1.0f)), a);
+                                                             tex_param_c("tex2", Color3(1.0f)), a);
         } else if (t.type == "checkerboard") {
             int dim = t.params.get_int("dimension", 2);
             if (dim != 2) unsupported(t.loc, "a 3D checkerboard is rendered as a 2D one");
             UVMapping m = mapping(t);
             if (is_float)
-                ft = own_float<Checkerboard2D<FloatTexture, float>>(tex_param_f("tex1", 1), tex_param_f("tex2", 0), m);
+                ft = own_float<Checkerboard2D<FloatTexture, float>>(tex_param_f("tex1", 1),
+                                                                    tex_param_f("tex2", 0), m);
             else
                 ct = own_color<Checkerboard2D<ColorTexture, Color3>>(tex_param_c("tex1", Color3(1.0f)),
-                                                                      tex_param_c("tex2", Color3(0.0f)), m);
+                                                                     tex_param_c("tex2", Color3(0.0f)), m);
         } else if (t.type == "imagemap") {
             std::string file = t.params.get_string("filename", "");
             std::string ext = std::filesystem::path(file).extension().string();
@@ -347,29 +377,40 @@ private:
             std::string enc = t.params.get_string("encoding", eight_bit ? "sRGB" : "linear");
             std::string wrap = t.params.get_string("wrap", "repeat");
             WrapMode w = WrapMode::Repeat;
-            if (wrap == "clamp") w = WrapMode::Clamp;
-            else if (wrap == "black") w = WrapMode::Black;
-            else if (wrap == "octahedralsphere") unsupported(t.loc, "wrap \"octahedralsphere\" is replaced by \"repeat\"");
-            else if (wrap != "repeat") throw Error(t.params.find("wrap")->loc, fmt::format("unknown wrap mode \"{}\"", wrap));
+            if (wrap == "clamp")
+                w = WrapMode::Clamp;
+            else if (wrap == "black")
+                w = WrapMode::Black;
+            else if (wrap == "octahedralsphere")
+                unsupported(t.loc, "wrap \"octahedralsphere\" is replaced by \"repeat\"");
+            else if (wrap != "repeat")
+                throw Error(t.params.find("wrap")->loc, fmt::format("unknown wrap mode \"{}\"", wrap));
             std::string filter = t.params.get_string("filter", "bilinear");
             if (filter != "bilinear" && filter != "point" && filter != "trilinear" && filter != "ewa")
-                throw Error(t.params.find("filter")->loc, fmt::format("unknown texture filter \"{}\"", filter));
+                throw Error(t.params.find("filter")->loc,
+                            fmt::format("unknown texture filter \"{}\"", filter));
             t.params.get_float("maxanisotropy", 8);
             ImageTextureData data(load_texture_image(t, enc), w, t.params.get_float("scale", 1),
                                   t.params.get_bool("invert", false));
             UVMapping m = mapping(t);
-            if (is_float) ft = own_float<ImageFloatTexture>(data, m);
-            else ct = own_color<ImageColorTexture>(data, m);
+            if (is_float)
+                ft = own_float<ImageFloatTexture>(data, m);
+            else
+                ct = own_color<ImageColorTexture>(data, m);
         } else if (t.type == "bilerp" || t.type == "directionmix" || t.type == "dots" || t.type == "fbm" ||
                    t.type == "marble" || t.type == "ptex" || t.type == "windy" || t.type == "wrinkled") {
             unsupported(t.loc, fmt::format("texture \"{}\" is approximated by a constant 0.5", t.type));
-            if (is_float) ft = constant_float(0.5f);
-            else ct = constant_color(Color3(0.5f));
+            if (is_float)
+                ft = constant_float(0.5f);
+            else
+                ct = constant_color(Color3(0.5f));
         } else {
             throw Error(t.loc, fmt::format("unknown texture type \"{}\"", t.type));
         }
-        if (is_float) float_textures_[t.name] = ft;
-        else color_textures_[t.name] = ct;
+        if (is_float)
+            float_textures_[t.name] = ft;
+        else
+            color_textures_[t.name] = ct;
     }
 
     const Material* own(std::unique_ptr<Material> m) {
@@ -379,7 +420,8 @@ private:
 
     int int_param(const EntityDesc& m, const char* name, int def, int lo, int hi) {
         int v = m.params.get_int(name, def);
-        if (v < lo || v > hi) throw Error(m.params.find(name)->loc, fmt::format("\"{}\" must be in [{}, {}]", name, lo, hi));
+        if (v < lo || v > hi)
+            throw Error(m.params.find(name)->loc, fmt::format("\"{}\" must be in [{}, {}]", name, lo, hi));
         return v;
     }
 
@@ -387,7 +429,8 @@ private:
         const ColorTexture* refl = color_param(m, "reflectance", std::nullopt);
         const ColorTexture* eta = color_param(m, prefix + "eta", std::nullopt);
         const ColorTexture* k = color_param(m, prefix + "k", std::nullopt);
-        if (refl && (eta || k)) unsupported(m.loc, "conductor with both \"reflectance\" and eta/k uses \"reflectance\"");
+        if (refl && (eta || k))
+            unsupported(m.loc, "conductor with both \"reflectance\" and eta/k uses \"reflectance\"");
         if (!eta) eta = constant_color(*named_spectrum_rgb("metal-Cu-eta"));
         if (!k) k = constant_color(*named_spectrum_rgb("metal-Cu-k"));
         auto c = std::make_unique<ConductorMaterial>(eta, k, refl, roughness(m, prefix));
@@ -398,7 +441,9 @@ private:
 
     void layered_warnings(const EntityDesc& m, const char* rough_name) {
         const Param* r = m.params.find(rough_name);
-        if (!r) r = m.params.find(std::string(rough_name).replace(std::string(rough_name).find("roughness"), 9, "uroughness"));
+        if (!r)
+            r = m.params.find(
+                std::string(rough_name).replace(std::string(rough_name).find("roughness"), 9, "uroughness"));
         // pbrt-v4 treats α < 1e-3 as smooth; illum's coat is always smooth, so warn from α > 2e-3 on.
         bool remap = m.params.get_bool("remaproughness", true);
         auto alpha = [&](float v) { return remap ? std::sqrt(std::max(v, 0.0f)) : v; };
@@ -406,22 +451,28 @@ private:
             unsupported(r->loc, fmt::format("a rough coat (\"{}\") is rendered smooth", r->name));
         if (m.params.has("albedo")) {
             const Param* a = m.params.find("albedo");
-            Color3 al = a->type == ParamType::RGB ? *m.params.get_rgb("albedo") : Color3(m.params.get_float("albedo", 0));
+            Color3 al = a->type == ParamType::RGB ? *m.params.get_rgb("albedo")
+                                                  : Color3(m.params.get_float("albedo", 0));
             if (a->type != ParamType::RGB && a->type != ParamType::Float) a->used = true;
-            if (!al.is_black()) unsupported(a->loc, "a scattering medium in a coated material (\"albedo\") is ignored");
+            if (!al.is_black())
+                unsupported(a->loc, "a scattering medium in a coated material (\"albedo\") is ignored");
         }
         if (m.params.has("g")) m.params.get_float("g", 0);
     }
 
     const Material* make_material(const EntityDesc& m, const std::string& type) {
-        if (type == "diffuse") return own(std::make_unique<DiffuseMaterial>(color_param(m, "reflectance", Color3(0.5f))));
+        if (type == "diffuse")
+            return own(std::make_unique<DiffuseMaterial>(color_param(m, "reflectance", Color3(0.5f))));
         if (type == "conductor") return conductor(m, "");
-        if (type == "dielectric") return own(std::make_unique<DielectricMaterial>(eta_param(m, "eta", 1.5f), roughness(m)));
-        if (type == "thindielectric") return own(std::make_unique<ThinDielectricMaterial>(eta_param(m, "eta", 1.5f)));
+        if (type == "dielectric")
+            return own(std::make_unique<DielectricMaterial>(eta_param(m, "eta", 1.5f), roughness(m)));
+        if (type == "thindielectric")
+            return own(std::make_unique<ThinDielectricMaterial>(eta_param(m, "eta", 1.5f)));
         if (type == "coateddiffuse") {
             layered_warnings(m, "roughness");
             float thickness = m.params.get_float("thickness", 0.01f);
-            if (!(thickness >= 0)) throw Error(m.params.find("thickness")->loc, "\"thickness\" must be non-negative");
+            if (!(thickness >= 0))
+                throw Error(m.params.find("thickness")->loc, "\"thickness\" must be non-negative");
             return own(std::make_unique<CoatedDiffuseMaterial>(
                 color_param(m, "reflectance", Color3(0.5f)), eta_param(m, "eta", 1.5f), thickness,
                 int_param(m, "maxdepth", 10, 1, 1000), int_param(m, "nsamples", 1, 1, 1000)));
@@ -436,9 +487,9 @@ private:
                                                                  int_param(m, "nsamples", 1, 1, 1000)));
         }
         if (type == "diffusetransmission")
-            return own(std::make_unique<DiffuseTransmissionMaterial>(color_param(m, "reflectance", Color3(0.25f)),
-                                                                     color_param(m, "transmittance", Color3(0.25f)),
-                                                                     m.params.get_float("scale", 1)));
+            return own(std::make_unique<DiffuseTransmissionMaterial>(
+                color_param(m, "reflectance", Color3(0.25f)), color_param(m, "transmittance", Color3(0.25f)),
+                m.params.get_float("scale", 1)));
         if (type == "interface") return own(std::make_unique<InterfaceMaterial>());
         if (type == "mix") {
             auto names = m.params.get_strings("materials");
@@ -449,7 +500,8 @@ private:
             for (int i = 0; i < 2; ++i) {
                 auto it = built_named_.find(names[i]);
                 if (it == built_named_.end())
-                    throw Error(m.params.find("materials")->loc, fmt::format("undefined named material \"{}\"", names[i]));
+                    throw Error(m.params.find("materials")->loc,
+                                fmt::format("undefined named material \"{}\"", names[i]));
                 ab[i] = it->second;
             }
             return own(std::make_unique<MixMaterial>(ab[0], ab[1], float_param(m, "amount", 0.5f)));
@@ -467,7 +519,8 @@ private:
         for (const TextureDesc& t : desc_.textures) build_texture(t);
         for (const MaterialDesc& m : desc_.materials) {
             std::string type = m.name.empty() ? m.type : m.params.get_string("type", m.type);
-            if (type.empty()) throw Error(m.loc, fmt::format("named material \"{}\" has no \"string type\"", m.name));
+            if (type.empty())
+                throw Error(m.loc, fmt::format("named material \"{}\" has no \"string type\"", m.name));
             materials_.push_back(make_material(m, type));
             if (!m.name.empty()) built_named_[m.name] = materials_.back();
         }
@@ -507,17 +560,23 @@ private:
         if (a.type != "diffuse") throw Error(a.loc, fmt::format("unknown area light type \"{}\"", a.type));
         Color3 l(1.0f);
         if (const Param* p = a.params.find("L")) {
-            if (p->type == ParamType::RGB) l = *a.params.get_rgb("L");
-            else if (p->type == ParamType::Spectrum) l = spectrum_rgb(*p, true);
-            else if (p->type == ParamType::Float) l = Color3(a.params.get_float("L", 1));
-            else a.params.fail(*p, fmt::format("parameter \"L\" cannot be of type {}", to_string(p->type)));
+            if (p->type == ParamType::RGB)
+                l = *a.params.get_rgb("L");
+            else if (p->type == ParamType::Spectrum)
+                l = spectrum_rgb(*p, true);
+            else if (p->type == ParamType::Float)
+                l = Color3(a.params.get_float("L", 1));
+            else
+                a.params.fail(*p, fmt::format("parameter \"L\" cannot be of type {}", to_string(p->type)));
         }
         if (a.params.has("filename")) {
             a.params.find("filename")->used = true;
-            unsupported(a.params.find("filename")->loc, "an image-textured area light is rendered with its L");
+            unsupported(a.params.find("filename")->loc,
+                        "an image-textured area light is rendered with its L");
         }
         l *= a.params.get_float("scale", 1);
-        if (l.has_negative() || !l.is_finite()) throw Error(a.loc, "area light radiance must be finite and non-negative");
+        if (l.has_negative() || !l.is_finite())
+            throw Error(a.loc, "area light radiance must be finite and non-negative");
         Emission e{l, a.params.get_bool("twosided", false), a.params.get_float("power", -1)};
         return e;
     }
@@ -545,7 +604,8 @@ private:
             // supported yet: the shape is rendered opaque.
             if (a->type == ParamType::Float) {
                 if (s.params.get_float("alpha", 1) <= 0) return;
-                if (s.params.get_float("alpha", 1) < 1) unsupported(a->loc, "partial \"alpha\" is rendered opaque");
+                if (s.params.get_float("alpha", 1) < 1)
+                    unsupported(a->loc, "partial \"alpha\" is rendered opaque");
             } else {
                 a->used = true;
                 unsupported(a->loc, "alpha textures (cut-outs) are not supported yet; the shape is opaque");
@@ -557,15 +617,19 @@ private:
             auto idx = s.params.get_ints("indices");
             if (mesh->p.empty()) throw Error(s.loc, "trianglemesh needs \"point3 P\"");
             if (idx.empty()) {
-                if (mesh->p.size() != 3) throw Error(s.loc, "trianglemesh without \"indices\" must have 3 vertices");
+                if (mesh->p.size() != 3)
+                    throw Error(s.loc, "trianglemesh without \"indices\" must have 3 vertices");
                 idx = {0, 1, 2};
             }
             if (idx.size() % 3 != 0)
-                throw Error(s.params.find("indices")->loc, fmt::format("trianglemesh has {} indices, not a multiple of 3", idx.size()));
+                throw Error(s.params.find("indices")->loc,
+                            fmt::format("trianglemesh has {} indices, not a multiple of 3", idx.size()));
             for (int i : idx)
                 if (i < 0 || std::size_t(i) >= mesh->p.size())
-                    throw Error(s.params.find("indices")->loc,
-                                fmt::format("trianglemesh index {} is out of range (the mesh has {} vertices)", i, mesh->p.size()));
+                    throw Error(
+                        s.params.find("indices")->loc,
+                        fmt::format("trianglemesh index {} is out of range (the mesh has {} vertices)", i,
+                                    mesh->p.size()));
             mesh->indices.assign(idx.begin(), idx.end());
             mesh->n = s.params.get_normals("N");
             if (!mesh->n.empty() && mesh->n.size() != mesh->p.size())
@@ -581,7 +645,8 @@ private:
             for (const char* p : {"zmin", "zmax", "phimax"})
                 if (s.params.has(p)) {
                     s.params.find(p)->used = true;
-                    unsupported(s.params.find(p)->loc, fmt::format("partial spheres (\"{}\") are rendered whole", p));
+                    unsupported(s.params.find(p)->loc,
+                                fmt::format("partial spheres (\"{}\") are rendered whole", p));
                 }
             Point3f c = s.world_from_object(Point3f{0, 0, 0});
             Vector3f ax = s.world_from_object(Vector3f{1, 0, 0}), ay = s.world_from_object(Vector3f{0, 1, 0}),
@@ -594,7 +659,8 @@ private:
             auto sphere = std::make_unique<SphereShape>(c, radius, flip);
             const Light* light = nullptr;
             if (auto e = area_light_of(s)) {
-                scene_->lights.push_back(std::make_unique<DiffuseAreaLight>(sphere.get(), e->for_area(4 * kPi * radius * radius), e->two_sided));
+                scene_->lights.push_back(std::make_unique<DiffuseAreaLight>(
+                    sphere.get(), e->for_area(4 * kPi * radius * radius), e->two_sided));
                 light = scene_->lights.back().get();
             }
             scene_->accelerator.add_sphere(std::move(sphere), resolve(s.material, s.loc), light);
@@ -606,7 +672,8 @@ private:
             auto disk = std::make_unique<DiskShape>(s.world_from_object, h, r, ri, flip);
             const Light* light = nullptr;
             if (auto e = area_light_of(s)) {
-                scene_->lights.push_back(std::make_unique<DiffuseAreaLight>(disk.get(), e->for_area(kPi * (r * r - ri * ri)), e->two_sided));
+                scene_->lights.push_back(std::make_unique<DiffuseAreaLight>(
+                    disk.get(), e->for_area(kPi * (r * r - ri * ri)), e->two_sided));
                 light = scene_->lights.back().get();
             }
             scene_->accelerator.add_disk(std::move(disk), resolve(s.material, s.loc), light);
@@ -639,7 +706,8 @@ private:
             auto idx = s.params.get_ints("indices");
             if (mesh->p.empty()) throw Error(s.loc, "bilinearmesh needs \"point3 P\"");
             if (idx.empty()) {
-                if (mesh->p.size() != 4) throw Error(s.loc, "bilinearmesh without \"indices\" must have 4 vertices");
+                if (mesh->p.size() != 4)
+                    throw Error(s.loc, "bilinearmesh without \"indices\" must have 4 vertices");
                 idx = {0, 1, 2, 3};
             }
             if (idx.size() % 4 != 0)
@@ -647,9 +715,10 @@ private:
                             fmt::format("bilinearmesh has {} indices, not a multiple of 4", idx.size()));
             for (int i : idx)
                 if (i < 0 || std::size_t(i) >= mesh->p.size())
-                    throw Error(s.params.find("indices")->loc,
-                                fmt::format("bilinearmesh index {} is out of range (the mesh has {} vertices)", i,
-                                            mesh->p.size()));
+                    throw Error(
+                        s.params.find("indices")->loc,
+                        fmt::format("bilinearmesh index {} is out of range (the mesh has {} vertices)", i,
+                                    mesh->p.size()));
             for (std::size_t q = 0; q < idx.size(); q += 4) {
                 std::uint32_t a = idx[q], b = idx[q + 1], c = idx[q + 2], d = idx[q + 3];
                 mesh->indices.insert(mesh->indices.end(), {a, b, d, a, d, c});
@@ -660,7 +729,8 @@ private:
             mesh->uv = s.params.get_point2s("uv");
             if (!mesh->uv.empty() && mesh->uv.size() != mesh->p.size())
                 throw Error(s.loc, "bilinearmesh has a different number of uv and P");
-            if (mesh->uv.empty() && idx.size() == 4 && mesh->p.size() == 4) mesh->uv = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+            if (mesh->uv.empty() && idx.size() == 4 && mesh->p.size() == 4)
+                mesh->uv = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
             add_mesh(s, std::move(mesh));
         } else if (s.type == "cylinder") {
             // Tessellated: 256 segments around, one along z; normals from the exact surface, so shading is
@@ -690,8 +760,8 @@ private:
                 mesh->indices.insert(mesh->indices.end(), {a, b, d, a, d, c});
             }
             add_mesh(s, std::move(mesh));
-        } else if (s.type == "loopsubdiv" ||
-                   s.type == "curve" || s.type == "cone" || s.type == "paraboloid" || s.type == "hyperboloid") {
+        } else if (s.type == "loopsubdiv" || s.type == "curve" || s.type == "cone" ||
+                   s.type == "paraboloid" || s.type == "hyperboloid") {
             unsupported(s.loc, fmt::format("shape \"{}\" is not supported yet and is skipped", s.type));
         } else {
             throw Error(s.loc, fmt::format("unknown shape type \"{}\"", s.type));
@@ -706,7 +776,8 @@ private:
             auto it = desc_.instances.find(use.name);
             if (it == desc_.instances.end())
                 throw Error(use.loc, fmt::format("undefined object \"{}\" in ObjectInstance", use.name));
-            if (!use.world_from_instance.matrix().is_finite()) throw Error(use.loc, "instance transform is not finite");
+            if (!use.world_from_instance.matrix().is_finite())
+                throw Error(use.loc, "instance transform is not finite");
             for (const ShapeDesc& shape : it->second.shapes) {
                 ShapeDesc copy = shape;
                 copy.world_from_object = use.world_from_instance * shape.world_from_object;
@@ -720,7 +791,8 @@ private:
     }
 
     void build_light(const LightDesc& l) {
-        LightFactoryContext ctx{[this](const SourceLocation& loc, const std::string& what) { unsupported(loc, what); }};
+        LightFactoryContext ctx{
+            [this](const SourceLocation& loc, const std::string& what) { unsupported(loc, what); }};
         if (auto light = make_light(l, ctx)) scene_->lights.push_back(std::move(light));
     }
 
