@@ -24,6 +24,12 @@ test: build
 test-long: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -L long
 
+FUZZ_SECONDS ?= 60
+
+# libFuzzer run of the pbrt tokenizer/parser and PLY reader (needs clang; `make setup` installs it).
+fuzz:
+	bash fuzz/run.sh $(BUILD)-fuzz $(FUZZ_SECONDS) $(SHARED)
+
 bench: build
 	./$(BUILD)/illum bench
 	./$(BUILD)/illum_bench

@@ -2,7 +2,7 @@
 # Installs the Debian packages illum builds against. Idempotent; uses sudo only when not root.
 set -euo pipefail
 packages=(build-essential cmake pkg-config libembree-dev libtbb-dev libopenexr-dev libstb-dev libcli11-dev
-          nlohmann-json3-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev)
+          nlohmann-json3-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev clang)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

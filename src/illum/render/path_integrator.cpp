@@ -6,8 +6,8 @@ namespace illum {
 
 Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
     Radiance3 l;
-    Color3 beta(1.0f);      // path throughput
-    float eta_scale = 1;    // radiance scaling by refraction, undone for Russian roulette
+    Color3 beta(1.0f);   // path throughput
+    float eta_scale = 1; // radiance scaling by refraction, undone for Russian roulette
     bool specular_bounce = false;
     float prev_bsdf_pdf = 0; // solid-angle pdf of the BSDF sample that made `ray`
     LightSampleContext prev_ctx;
@@ -23,7 +23,8 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
                 if (depth == 0 || specular_bounce) {
                     l += le * beta;
                 } else {
-                    float p_light = scene_.light_sampler.pmf(env) * env->pdf_li(prev_ctx, ray.d, nullptr).value;
+                    float p_light =
+                        scene_.light_sampler.pmf(env) * env->pdf_li(prev_ctx, ray.d, nullptr).value;
                     l += le * beta * power_heuristic(prev_bsdf_pdf, p_light);
                 }
             }
@@ -85,8 +86,15 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         if (!bs) break;
         beta *= bs->f.rgb * (abs_dot(bs->wi, hit.ns) / bs->pdf.value);
         specular_bounce = bs->is_specular();
-        prev_bsdf_pdf = bs->pdf_is_proportional ? 0.0f : bs->pdf.value;
-        if (bs->pdf_is_proportional) specular_bounce = false;
+        prev_bsdf_pdf = bs->pdf.value;
+        if (bs->pdf_is_proportional && !specular_bounce) {
+            // A stochastic (layered) BSDF: its sample's pdf is not the density that pdf() returns, but MIS
+            // stays unbiased as long as both strategies weigh with the same functions, so a light hit by
+            // this sample is weighed with pdf() as next-event estimation is. (Weighing it 0 while
+            // next-event estimation weighs by pdf() loses energy.) A delta sample (the coat's mirror
+            // reflection) keeps full weight: next-event estimation cannot produce it.
+            prev_bsdf_pdf = bsdf.pdf(wo, bs->wi).value;
+        }
         if (bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
         prev_ctx = ctx;
         ray = hit.spawn_ray(bs->wi);

@@ -1,0 +1,232 @@
+// The materials of pbrt-v4 scene files on top of illum's reflection models. Each evaluates its
+// textures at the hit and places one BxDF in the per-thread arena (no heap allocation per ray).
+//
+// Roughness follows pbrt-v4: with remaproughness (the default) α = sqrt(roughness) (its
+// TrowbridgeReitzDistribution::RoughnessToAlpha); a Trowbridge-Reitz (GGX) distribution whose larger α
+// is below 1e-3 is treated as smooth (a delta lobe).
+#pragma once
+
+#include <cmath>
+#include <cstring>
+
+#include "illum/bsdf/coated.h"
+#include "illum/bsdf/conductor.h"
+#include "illum/bsdf/dielectric.h"
+#include "illum/bsdf/diffuse_transmission.h"
+#include "illum/bsdf/material.h"
+#include "illum/bsdf/rough_conductor.h"
+#include "illum/bsdf/rough_dielectric.h"
+#include "illum/bsdf/thin_dielectric.h"
+
+namespace illum {
+
+struct RoughnessParams {
+    const FloatTexture* u = nullptr;
+    const FloatTexture* v = nullptr;
+    bool remap = true;
+
+    // (αx, αy); both 0 for an effectively smooth surface.
+    Vector2f alpha(const SurfaceHit& hit) const {
+        float ru = std::max(0.0f, u->evaluate(hit)), rv = std::max(0.0f, v->evaluate(hit));
+        float ax = remap ? std::sqrt(ru) : ru, ay = remap ? std::sqrt(rv) : rv;
+        if (std::max(ax, ay) < 1e-3f) return {0, 0};
+        return {std::clamp(ax, 1e-3f, 2.0f), std::clamp(ay, 1e-3f, 2.0f)};
+    }
+};
+
+inline MicrofacetDistribution ggx(Vector2f a) {
+    return MicrofacetDistribution(MicrofacetType::GGX, a.x, a.y);
+}
+
+// pbrt-v4 "conductor": complex index η + ik, or an artist's normal-incidence `reflectance` r mapped to
+// η = 1, k = 2 sqrt(r) / sqrt(1 - r) (so that the Fresnel reflectance at normal incidence is r).
+class ConductorMaterial final : public Material {
+public:
+    ConductorMaterial(const ColorTexture* eta, const ColorTexture* k, const ColorTexture* reflectance,
+                      RoughnessParams rough)
+        : eta_(eta), k_(k), reflectance_(reflectance), rough_(rough) {}
+    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
+        Color3 eta, k;
+        index(hit, &eta, &k);
+        Vector2f a = rough_.alpha(hit);
+        const BxDF* b;
+        if (a.x == 0)
+            b = arena.make<ConductorBxDF>(eta, k);
+        else
+            b = arena.make<RoughConductorBxDF>(ggx(a), Fresnel{eta, k, FresnelMode::Exact});
+        return BSDF(b, hit.shading_frame());
+    }
+    Color3 albedo(const SurfaceHit& hit) const override {
+        Color3 eta, k;
+        index(hit, &eta, &k);
+        return conductor_f0(eta, k);
+    }
+    void index(const SurfaceHit& hit, Color3* eta, Color3* k) const {
+        if (reflectance_) {
+            Color3 r = clamp(reflectance_->evaluate(hit), 0.0f, 0.9999f);
+            *eta = Color3(1.0f);
+            *k = Color3(2 * std::sqrt(r.r) / std::sqrt(1 - r.r), 2 * std::sqrt(r.g) / std::sqrt(1 - r.g),
+                        2 * std::sqrt(r.b) / std::sqrt(1 - r.b));
+        } else {
+            *eta = eta_->evaluate(hit);
+            *k = clamp(k_->evaluate(hit), 0.0f, 1e4f);
+            eta->r = std::max(eta->r, 1e-4f);
+            eta->g = std::max(eta->g, 1e-4f);
+            eta->b = std::max(eta->b, 1e-4f);
+        }
+    }
+
+private:
+    const ColorTexture *eta_, *k_, *reflectance_;
+    RoughnessParams rough_;
+};
+
+// pbrt-v4 "dielectric": smooth or rough (GGX) interface of relative index η (a spectrally varying η is
+// reduced to one value at build time).
+class DielectricMaterial final : public Material {
+public:
+    DielectricMaterial(float eta, RoughnessParams rough) : eta_(eta), rough_(rough) {}
+    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
+        Vector2f a = rough_.alpha(hit);
+        const BxDF* b;
+        if (a.x == 0 || eta_ == 1)
+            b = arena.make<DielectricBxDF>(eta_);
+        else
+            b = arena.make<RoughDielectricBxDF>(ggx(a), eta_);
+        return BSDF(b, hit.shading_frame());
+    }
+    Color3 albedo(const SurfaceHit&) const override { return Color3(1.0f); }
+
+private:
+    float eta_;
+    RoughnessParams rough_;
+};
+
+class ThinDielectricMaterial final : public Material {
+public:
+    explicit ThinDielectricMaterial(float eta) : eta_(eta) {}
+    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
+        return BSDF(arena.make<ThinDielectricBxDF>(eta_), hit.shading_frame());
+    }
+    Color3 albedo(const SurfaceHit&) const override { return Color3(1.0f); }
+
+private:
+    float eta_;
+};
+
+// pbrt-v4 "coateddiffuse" with illum's layered model: a smooth dielectric coat over a Lambertian base,
+// evaluated by a random walk (coated.h). Differences from pbrt-v4: the coat is always smooth (pbrt-v4
+// roughens it with `roughness`), and the layer between holds no scattering medium; its absorption over
+// `thickness` (pbrt-v4 attenuates by exp(-thickness/|cos θ|) per crossing even with albedo 0) is folded
+// into the base reflectance as exp(-4 thickness), the round trip at the mean 1/|cos θ| = 2 of a
+// cosine-distributed direction.
+class CoatedDiffuseMaterial final : public Material {
+public:
+    CoatedDiffuseMaterial(const ColorTexture* reflectance, float eta, float thickness, int max_depth,
+                          int samples)
+        : reflectance_(reflectance), eta_(eta), attenuation_(std::exp(-4 * thickness)), max_depth_(max_depth),
+          samples_(samples) {}
+    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
+        Color3 r = clamp(reflectance_->evaluate(hit), 0.0f, 1.0f) * attenuation_;
+        return BSDF(arena.make<CoatedDiffuseBxDF>(eta_, LambertBxDF(r), max_depth_, samples_),
+                    hit.shading_frame());
+    }
+    Color3 albedo(const SurfaceHit& hit) const override {
+        return clamp(reflectance_->evaluate(hit), 0.0f, 1.0f);
+    }
+
+private:
+    const ColorTexture* reflectance_;
+    float eta_, attenuation_;
+    int max_depth_, samples_;
+};
+
+// pbrt-v4 "coatedconductor": a smooth coat of index η over a rough conductor whose index is taken relative
+// to the coat (η_c / η, k_c / η), as pbrt-v4 does. A smooth base conductor gets the smallest roughness
+// the rough model takes (α = 1e-3).
+class CoatedConductorMaterial final : public Material {
+public:
+    CoatedConductorMaterial(float interface_eta, const ConductorMaterial* conductor, RoughnessParams rough,
+                            int max_depth, int samples)
+        : eta_(interface_eta), conductor_(conductor), rough_(rough), max_depth_(max_depth),
+          samples_(samples) {}
+    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
+        Color3 eta, k;
+        conductor_->index(hit, &eta, &k);
+        eta /= eta_;
+        k /= eta_;
+        Vector2f a = rough_.alpha(hit);
+        if (a.x == 0) a = {1e-3f, 1e-3f};
+        RoughConductorBxDF base(ggx(a), Fresnel{eta, k, FresnelMode::Exact});
+        return BSDF(arena.make<CoatedConductorBxDF>(eta_, base, max_depth_, samples_), hit.shading_frame());
+    }
+    Color3 albedo(const SurfaceHit& hit) const override { return conductor_->albedo(hit); }
+
+private:
+    float eta_;
+    const ConductorMaterial* conductor_;
+    RoughnessParams rough_;
+    int max_depth_, samples_;
+};
+
+class DiffuseTransmissionMaterial final : public Material {
+public:
+    DiffuseTransmissionMaterial(const ColorTexture* r, const ColorTexture* t, float scale)
+        : r_(r), t_(t), scale_(scale) {}
+    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
+        Color3 r = clamp(r_->evaluate(hit) * scale_, 0.0f, 1.0f),
+               t = clamp(t_->evaluate(hit) * scale_, 0.0f, 1.0f);
+        Color3 sum = r + t;
+        float m = sum.max_component();
+        if (m > 1) {
+            r /= m;
+            t /= m;
+        }
+        return BSDF(arena.make<DiffuseTransmissionBxDF>(r, t), hit.shading_frame());
+    }
+    Color3 albedo(const SurfaceHit& hit) const override {
+        return clamp(r_->evaluate(hit) * scale_, 0.0f, 1.0f);
+    }
+
+private:
+    const ColorTexture *r_, *t_;
+    float scale_;
+};
+
+// pbrt-v4 "interface": no surface at all; the integrators pass straight through an empty BSDF.
+class InterfaceMaterial final : public Material {
+public:
+    BSDF bsdf(const SurfaceHit&, ScratchArena&) const override { return BSDF(); }
+    Color3 albedo(const SurfaceHit&) const override { return Color3(0.0f); }
+};
+
+// pbrt-v4 "mix": one of two materials, chosen per hit: the second where amount > u, with u a hash of the
+// hit point and the outgoing direction in [0, 1), so the choice is deterministic for a given hit (as in
+// pbrt-v4's MixMaterial::ChooseMaterial, which hashes the same quantities).
+class MixMaterial final : public Material {
+public:
+    MixMaterial(const Material* a, const Material* b, const FloatTexture* amount)
+        : a_(a), b_(b), amount_(amount) {}
+    const Material* choose(const SurfaceHit& hit) const {
+        float t = amount_->evaluate(hit);
+        if (t <= 0) return a_;
+        if (t >= 1) return b_;
+        std::uint64_t h = bsdf_detail::hash_floats({hit.p.x, hit.p.y, hit.p.z, hit.wo.x, hit.wo.y, hit.wo.z});
+        float u = float(h >> 40) * 0x1p-24f;
+        return t < u ? a_ : b_;
+    }
+    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
+        const Material* m = choose(hit);
+        return m ? m->bsdf(hit, arena) : BSDF();
+    }
+    Color3 albedo(const SurfaceHit& hit) const override {
+        float t = std::clamp(amount_->evaluate(hit), 0.0f, 1.0f);
+        return (a_ ? a_->albedo(hit) : Color3(0.0f)) * (1 - t) + (b_ ? b_->albedo(hit) : Color3(0.0f)) * t;
+    }
+
+private:
+    const Material *a_, *b_;
+    const FloatTexture* amount_;
+};
+
+} // namespace illum

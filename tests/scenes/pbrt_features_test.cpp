@@ -1,0 +1,131 @@
+// pbrt-v4 features that build.cpp maps: materials, textures, spectra, area light parameters, shapes,
+// instances.
+#include <gtest/gtest.h>
+
+#include "illum/radiometry/spectra.h"
+#include "illum/scene/build.h"
+#include "illum/scene/pbrt/parser.h"
+#include "test_support.h"
+
+namespace illum {
+namespace {
+
+std::unique_ptr<Scene> build(const std::string& world, const BuildOptions& o = {}) {
+    std::string text =
+        "Camera \"perspective\"\nFilm \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\n"
+        "WorldBegin\n" +
+        world;
+    return build_scene(parse_pbrt_string(text, "<test>", "."), o);
+}
+
+TEST(Spectra, ConstantAndIlluminantNormalisation) {
+    SampledSpectrum one{{300, 900}, {0.7, 0.7}};
+    Color3 c = unbounded_spectrum_to_rgb(one);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(c[i], 0.7f, 1e-4f);
+    for (double t : {2000.0, 2856.0, 6500.0, 10000.0})
+        EXPECT_NEAR(blackbody_rgb(t).luminance(), 1.0f, 0.01f) << t;
+    Color3 warm = blackbody_rgb(2856), cool = blackbody_rgb(10000);
+    EXPECT_GT(warm.r, warm.b);
+    EXPECT_LT(cool.r, cool.b);
+    Color3 d65 = blackbody_rgb(6504); // near the sRGB white
+    EXPECT_NEAR(d65.r / d65.b, 1.0f, 0.1f);
+    EXPECT_TRUE(named_spectrum_rgb("metal-Au-eta").has_value());
+    EXPECT_FALSE(named_spectrum_rgb("metal-Xx-eta").has_value());
+    EXPECT_NEAR(cie_y(555), 1.0, 0.02); // the photopic peak
+}
+
+TEST(PbrtMaterials, EveryMaterialTypeBuildsAndShades) {
+    auto s = build(R"(
+Texture "c" "spectrum" "checkerboard" "rgb tex1" [1 0 0]
+Texture "f" "float" "scale" "float tex" 0.5 "float scale" 0.2
+Texture "m" "spectrum" "mix" "texture tex1" "c" "rgb tex2" [0 1 0] "float amount" 0.3
+MakeNamedMaterial "a" "string type" "conductor" "spectrum eta" "metal-Au-eta" "spectrum k" "metal-Au-k" "float roughness" 0.1
+MakeNamedMaterial "b" "string type" "dielectric" "spectrum eta" "glass-BK7" "texture roughness" "f"
+MakeNamedMaterial "mx" "string type" "mix" "string materials" ["a" "b"] "float amount" 0.5
+Material "coateddiffuse" "texture reflectance" "m"
+Shape "sphere"
+Material "coatedconductor" "spectrum conductor.eta" "metal-Cu-eta" "spectrum conductor.k" "metal-Cu-k"
+Shape "sphere"
+Material "conductor" "rgb reflectance" [0.9 0.5 0.2]
+Shape "sphere"
+Material "thindielectric"
+Shape "sphere"
+Material "diffusetransmission"
+Shape "sphere"
+Material "interface"
+Shape "sphere"
+NamedMaterial "mx"
+Shape "sphere"
+)");
+    EXPECT_TRUE(s->warnings.empty()) << s->warnings.front();
+    EXPECT_GE(s->materials.size(), 9u);
+    SurfaceHit hit;
+    hit.p = {0, 0, 1};
+    hit.n = hit.ns = Normal3f(0, 0, 1);
+    hit.dpdu = {1, 0, 0};
+    hit.wo = {0, 0.6f, 0.8f};
+    hit.uv = {0.25f, 0.25f};
+    ScratchArena arena;
+    int empty = 0;
+    for (const auto& m : s->materials) {
+        arena.reset();
+        BSDF b = m->bsdf(hit, arena);
+        if (!b) {
+            ++empty;
+            continue;
+        }
+        auto smp = b.sample(hit.wo, 0.3f, {0.4f, 0.6f});
+        if (smp) {
+            EXPECT_TRUE(smp->f.rgb.is_finite());
+        }
+    }
+    EXPECT_EQ(empty, 1); // interface
+}
+
+TEST(PbrtMaterials, ConductorReflectanceIsTheNormalIncidenceFresnel) {
+    auto s = build("Material \"conductor\" \"rgb reflectance\" [0.9 0.5 0.2]\nShape \"sphere\"\n");
+    SurfaceHit hit;
+    Color3 a = s->materials.front()->albedo(hit);
+    EXPECT_NEAR(a.r, 0.9f, 1e-3f);
+    EXPECT_NEAR(a.g, 0.5f, 1e-3f);
+    EXPECT_NEAR(a.b, 0.2f, 1e-3f);
+}
+
+TEST(PbrtMaterials, UnknownAndUnsupportedTypes) {
+    EXPECT_THROW(build("Material \"plastic\"\nShape \"sphere\"\n"), Error);
+    auto s = build("Material \"subsurface\"\nShape \"sphere\"\n");
+    EXPECT_EQ(s->warnings.size(), 1u);
+    BuildOptions strict;
+    strict.strict = true;
+    EXPECT_THROW(build("Material \"subsurface\"\nShape \"sphere\"\n", strict), Error);
+}
+
+TEST(PbrtAreaLights, PowerGivesRadiancePerPrimitiveArea) {
+    // A one-sided unit-radius sphere of power 4π² W: L = P / (π A) = 4π² / (π 4π) = 1.
+    auto s =
+        build("AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 1 1] \"float power\" 39.4784176\n"
+              "Shape \"sphere\"\nAttributeEnd\n");
+    ASSERT_EQ(s->lights.size(), 1u);
+    Power3 p = s->lights.front()->power();
+    EXPECT_NEAR(p.rgb.g, 39.478f, 0.05f);
+}
+
+TEST(PbrtShapes, BilinearMeshCylinderAndInstances) {
+    auto s = build(R"(
+ObjectBegin "q"
+Shape "bilinearmesh" "point3 P" [0 0 0 1 0 0 0 1 0 1 1 0]
+ObjectEnd
+ObjectInstance "q"
+AttributeBegin
+Translate 0 0 2
+ObjectInstance "q"
+AttributeEnd
+Shape "cylinder"
+Shape "sphere" "float alpha" 0
+)");
+    EXPECT_EQ(s->accelerator.triangle_count(), 2u + 2u + 2u * 256u);
+    EXPECT_THROW(build("ObjectInstance \"nothing\"\n"), Error);
+}
+
+} // namespace
+} // namespace illum
