@@ -63,10 +63,10 @@ public:
     CoatedBxDF(float eta, Base base, int max_depth, int samples, const char* name = "coated")
         : top_(eta), base_(base), max_depth_(max_depth), samples_(samples) {
         using namespace bsdf_detail;
-        require(in_range(eta, 1e-3f, 100), name, "eta must be in (0, 100], got " + str(eta));
-        require(max_depth >= 1 && max_depth <= 1000, name,
+        ILLUM_REQUIRE(in_range(eta, 1e-3f, 100), name, "eta must be in (0, 100], got " + str(eta));
+        ILLUM_REQUIRE(max_depth >= 1 && max_depth <= 1000, name,
                 "max_depth must be in [1, 1000], got " + std::to_string(max_depth));
-        require(samples >= 1 && samples <= 1000, name,
+        ILLUM_REQUIRE(samples >= 1 && samples <= 1000, name,
                 "samples must be in [1, 1000], got " + std::to_string(samples));
     }
     std::uint8_t flags() const override {

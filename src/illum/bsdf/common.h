@@ -13,9 +13,7 @@ inline Vector3f reflect_z(Vector3f w) { return {-w.x, -w.y, w.z}; }
 
 namespace bsdf_detail {
 // Parameter validation for the model constructors (they throw illum::Error with a clear message).
-inline void require(bool ok, const char* model, const std::string& what) {
-    if (!ok) throw Error(std::string(model) + ": " + what);
-}
+[[noreturn]] inline void fail(const char* model, const std::string& what) { throw Error(std::string(model) + ": " + what); }
 inline bool in_range(float v, float lo, float hi) { return v >= lo && v <= hi; } // false for NaN
 inline bool in_range(Color3 c, float lo, float hi) {
     return in_range(c.r, lo, hi) && in_range(c.g, lo, hi) && in_range(c.b, lo, hi);
@@ -27,5 +25,12 @@ inline std::string str(float v) {
 }
 inline std::string str(Color3 c) { return str(c.r) + "," + str(c.g) + "," + str(c.b); }
 } // namespace bsdf_detail
+
+// Throws illum::Error "model: what" unless ok. A macro so that the message (string concatenation) is built
+// only on failure: materials construct models per hit, and that must not touch the heap.
+#define ILLUM_REQUIRE(ok, model, what)                                                                       \
+    do {                                                                                                     \
+        if (!(ok)) ::illum::bsdf_detail::fail(model, what);                                                  \
+    } while (0)
 
 } // namespace illum

@@ -16,8 +16,8 @@ class ConductorBxDF final : public BxDF {
 public:
     ConductorBxDF(Color3 eta, Color3 k, FresnelMode mode = FresnelMode::Exact) : fresnel_{eta, k, mode} {
         using namespace bsdf_detail;
-        require(eta.r > 0 && eta.g > 0 && eta.b > 0, "conductor", "eta must be > 0, got " + str(eta));
-        require(in_range(k, 0, 1e4f), "conductor", "k must be >= 0, got " + str(k));
+        ILLUM_REQUIRE(eta.r > 0 && eta.g > 0 && eta.b > 0, "conductor", "eta must be > 0, got " + str(eta));
+        ILLUM_REQUIRE(in_range(k, 0, 1e4f), "conductor", "k must be >= 0, got " + str(k));
     }
     std::uint8_t flags() const override { return kSpecularReflection; }
     Bsdf3 f(Vector3f, Vector3f, TransportMode) const override { return {}; }

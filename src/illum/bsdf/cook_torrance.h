@@ -22,13 +22,13 @@ public:
     CookTorranceBxDF(Color3 kd, Color3 ks, float m, Fresnel fresnel)
         : kd_(kd), ks_(ks), fresnel_(fresnel), distrib_(MicrofacetType::Beckmann, m, m) {
         using namespace bsdf_detail;
-        require(in_range(kd, 0, 1), "cook-torrance", "kd must be in [0, 1], got " + str(kd));
-        require(in_range(ks, 0, 1), "cook-torrance", "ks must be in [0, 1], got " + str(ks));
-        require(in_range(kd + ks, 0, 1), "cook-torrance", "kd + ks must be <= 1, got " + str(kd + ks));
-        require(in_range(m, 1e-3f, 1), "cook-torrance", "roughness m must be in [0.001, 1], got " + str(m));
+        ILLUM_REQUIRE(in_range(kd, 0, 1), "cook-torrance", "kd must be in [0, 1], got " + str(kd));
+        ILLUM_REQUIRE(in_range(ks, 0, 1), "cook-torrance", "ks must be in [0, 1], got " + str(ks));
+        ILLUM_REQUIRE(in_range(kd + ks, 0, 1), "cook-torrance", "kd + ks must be <= 1, got " + str(kd + ks));
+        ILLUM_REQUIRE(in_range(m, 1e-3f, 1), "cook-torrance", "roughness m must be in [0.001, 1], got " + str(m));
         Color3 e = fresnel.eta;
-        require(e.r > 0 && e.g > 0 && e.b > 0, "cook-torrance", "eta must be > 0, got " + str(e));
-        require(in_range(fresnel.k, 0, 1e4f), "cook-torrance", "k must be >= 0, got " + str(fresnel.k));
+        ILLUM_REQUIRE(e.r > 0 && e.g > 0 && e.b > 0, "cook-torrance", "eta must be > 0, got " + str(e));
+        ILLUM_REQUIRE(in_range(fresnel.k, 0, 1e4f), "cook-torrance", "k must be >= 0, got " + str(fresnel.k));
         p_spec_ = specular_lobe_probability(kd, ks);
     }
     std::uint8_t flags() const override { return kDiffuseReflection | kGlossyReflection; }

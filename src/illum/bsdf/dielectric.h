@@ -15,7 +15,7 @@ class DielectricBxDF final : public BxDF {
 public:
     explicit DielectricBxDF(float eta, FresnelMode mode = FresnelMode::Exact) : fresnel_{eta, mode} {
         using namespace bsdf_detail;
-        require(in_range(eta, 1e-3f, 100), "dielectric", "eta must be in (0, 100], got " + str(eta));
+        ILLUM_REQUIRE(in_range(eta, 1e-3f, 100), "dielectric", "eta must be in (0, 100], got " + str(eta));
     }
     std::uint8_t flags() const override {
         return fresnel_.eta == 1 ? kSpecularTransmission : (kSpecularReflection | kSpecularTransmission);

@@ -10,7 +10,7 @@ class MirrorBxDF final : public BxDF {
 public:
     explicit MirrorBxDF(Color3 reflectance = Color3(1)) : reflectance_(reflectance) {
         using namespace bsdf_detail;
-        require(in_range(reflectance, 0, 1), "mirror",
+        ILLUM_REQUIRE(in_range(reflectance, 0, 1), "mirror",
                 "reflectance must be in [0, 1], got " + str(reflectance));
     }
     std::uint8_t flags() const override { return kSpecularReflection; }

@@ -16,11 +16,11 @@ class PhongBxDF final : public BxDF {
 public:
     PhongBxDF(Color3 kd, Color3 ks, float exponent) : kd_(kd), ks_(ks), n_(exponent) {
         using namespace bsdf_detail;
-        require(in_range(kd, 0, 1), "phong", "kd must be in [0, 1], got " + str(kd));
-        require(in_range(ks, 0, 1), "phong", "ks must be in [0, 1], got " + str(ks));
-        require(in_range(kd + ks, 0, 1), "phong",
+        ILLUM_REQUIRE(in_range(kd, 0, 1), "phong", "kd must be in [0, 1], got " + str(kd));
+        ILLUM_REQUIRE(in_range(ks, 0, 1), "phong", "ks must be in [0, 1], got " + str(ks));
+        ILLUM_REQUIRE(in_range(kd + ks, 0, 1), "phong",
                 "kd + ks must be <= 1 for energy conservation, got " + str(kd + ks));
-        require(in_range(exponent, 0, 1e5f), "phong",
+        ILLUM_REQUIRE(in_range(exponent, 0, 1e5f), "phong",
                 "exponent must be in [0, 100000], got " + str(exponent));
         p_spec_ = specular_lobe_probability(kd, ks);
     }

@@ -20,11 +20,11 @@ public:
     WardBxDF(Color3 rho_d, Color3 rho_s, float alpha_x, float alpha_y)
         : rd_(rho_d), rs_(rho_s), distrib_(MicrofacetType::Beckmann, alpha_x, alpha_y) {
         using namespace bsdf_detail;
-        require(in_range(rho_d, 0, 1), "ward", "rho_d must be in [0, 1], got " + str(rho_d));
-        require(in_range(rho_s, 0, 1), "ward", "rho_s must be in [0, 1], got " + str(rho_s));
-        require(in_range(rho_d + rho_s, 0, 1), "ward",
+        ILLUM_REQUIRE(in_range(rho_d, 0, 1), "ward", "rho_d must be in [0, 1], got " + str(rho_d));
+        ILLUM_REQUIRE(in_range(rho_s, 0, 1), "ward", "rho_s must be in [0, 1], got " + str(rho_s));
+        ILLUM_REQUIRE(in_range(rho_d + rho_s, 0, 1), "ward",
                 "rho_d + rho_s must be <= 1, got " + str(rho_d + rho_s));
-        require(in_range(alpha_x, 1e-3f, 1) && in_range(alpha_y, 1e-3f, 1), "ward",
+        ILLUM_REQUIRE(in_range(alpha_x, 1e-3f, 1) && in_range(alpha_y, 1e-3f, 1), "ward",
                 "alpha must be in [0.001, 1], got " + str(alpha_x) + ", " + str(alpha_y));
         p_spec_ = specular_lobe_probability(rho_d, rho_s);
     }
