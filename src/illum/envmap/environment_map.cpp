@@ -37,9 +37,10 @@ EnvLayout EnvironmentMap::default_layout(int width, int height, const std::strin
 EnvironmentMap EnvironmentMap::load(const std::string& path, std::optional<EnvLayout> layout) {
     std::string ext = image_extension(path);
     if (ext != ".exr" && ext != ".pfm" && ext != ".hdr")
-        throw Error(fmt::format("\"{}\": an environment map must be a high-dynamic-range image (.exr, .pfm or "
-                                ".hdr), not \"{}\"",
-                                path, ext));
+        throw Error(
+            fmt::format("\"{}\": an environment map must be a high-dynamic-range image (.exr, .pfm or "
+                        ".hdr), not \"{}\"",
+                        path, ext));
     Image img = read_image(path);
     std::string what = fmt::format("\"{}\"", path);
     EnvLayout l = layout ? *layout : default_layout(img.width(), img.height(), what);
@@ -118,7 +119,8 @@ float EnvironmentMap::texel_solid_angle(int x, int y) const {
         double t0 = kPiD * y / h, t1 = kPiD * (y + 1) / h;
         return float(2 * kPiD / w * (std::cos(t0) - std::cos(t1)));
     }
-    case EnvLayout::Octahedral: return float(4 * kPiD / (double(w) * h));
+    case EnvLayout::Octahedral:
+        return float(4 * kPiD / (double(w) * h));
     default: {
         constexpr int k = 4;
         double sum = 0;
@@ -134,7 +136,8 @@ const std::vector<float>& EnvironmentMap::solid_angles() const {
     if (solid_angles_.size() != image_.pixel_count()) {
         std::vector<float> s(image_.pixel_count());
         for (int y = 0; y < image_.height(); ++y)
-            for (int x = 0; x < image_.width(); ++x) s[std::size_t(y) * image_.width() + x] = texel_solid_angle(x, y);
+            for (int x = 0; x < image_.width(); ++x)
+                s[std::size_t(y) * image_.width() + x] = texel_solid_angle(x, y);
         solid_angles_ = std::move(s);
     }
     return solid_angles_;

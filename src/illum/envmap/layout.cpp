@@ -48,12 +48,18 @@ Point2f sphere_to_octahedral(Vector3f d) {
 // Cubemap faces in the order +X, -X, +Y, -Y, +Z, -Z; (s, t) in [-1, 1]², t down the image.
 Vector3f cube_face_direction(int face, float s, float t) {
     switch (face) {
-    case 0: return {1, -t, -s};
-    case 1: return {-1, -t, s};
-    case 2: return {s, 1, t};
-    case 3: return {s, -1, -t};
-    case 4: return {s, -t, 1};
-    default: return {-s, -t, -1};
+    case 0:
+        return {1, -t, -s};
+    case 1:
+        return {-1, -t, s};
+    case 2:
+        return {s, 1, t};
+    case 3:
+        return {s, -1, -t};
+    case 4:
+        return {s, -t, 1};
+    default:
+        return {-s, -t, -1};
     }
 }
 
@@ -61,11 +67,16 @@ Vector3f cube_face_direction(int face, float s, float t) {
 
 const char* to_string(EnvLayout l) {
     switch (l) {
-    case EnvLayout::LatLong: return "latlong";
-    case EnvLayout::Octahedral: return "octahedral";
-    case EnvLayout::MirrorBall: return "mirrorball";
-    case EnvLayout::Angular: return "angular";
-    case EnvLayout::Cubemap: return "cubemap";
+    case EnvLayout::LatLong:
+        return "latlong";
+    case EnvLayout::Octahedral:
+        return "octahedral";
+    case EnvLayout::MirrorBall:
+        return "mirrorball";
+    case EnvLayout::Angular:
+        return "angular";
+    case EnvLayout::Cubemap:
+        return "cubemap";
     }
     return "?";
 }
@@ -81,17 +92,20 @@ std::optional<EnvLayout> env_layout_from_string(const std::string& s) {
 
 int env_layout_aspect(EnvLayout l) {
     switch (l) {
-    case EnvLayout::LatLong: return 2;
-    case EnvLayout::Cubemap: return 6;
-    default: return 1;
+    case EnvLayout::LatLong:
+        return 2;
+    case EnvLayout::Cubemap:
+        return 6;
+    default:
+        return 1;
     }
 }
 
 void check_env_layout_size(EnvLayout l, int width, int height, const std::string& what) {
     int aspect = env_layout_aspect(l);
     if (width <= 0 || height <= 0 || width != aspect * height)
-        throw Error(fmt::format("{}: a {} environment map must be {}:1 (width = {} x height), not {}x{}", what,
-                                to_string(l), aspect, aspect, width, height));
+        throw Error(fmt::format("{}: a {} environment map must be {}:1 (width = {} x height), not {}x{}",
+                                what, to_string(l), aspect, aspect, width, height));
 }
 
 std::optional<Vector3f> env_direction(EnvLayout l, Point2f uv) {
@@ -101,7 +115,8 @@ std::optional<Vector3f> env_direction(EnvLayout l, Point2f uv) {
         float st = std::sin(theta);
         return Vector3f{st * std::cos(phi), st * std::sin(phi), std::cos(theta)};
     }
-    case EnvLayout::Octahedral: return octahedral_to_sphere(2 * uv.x - 1, 2 * uv.y - 1);
+    case EnvLayout::Octahedral:
+        return octahedral_to_sphere(2 * uv.x - 1, 2 * uv.y - 1);
     case EnvLayout::MirrorBall: {
         float a = 2 * uv.x - 1, b = 1 - 2 * uv.y;
         float r2 = a * a + b * b;
@@ -129,7 +144,12 @@ std::optional<Vector3f> env_direction(EnvLayout l, Point2f uv) {
 
 Point2f env_uv(EnvLayout l, Vector3f d) {
     switch (l) {
-    case EnvLayout::LatLong: return {spherical_phi(d) * (0.5f / kPi), spherical_theta(d) * kInvPi};
+    case EnvLayout::LatLong: {
+        // θ by atan2, well conditioned near the poles (acos(z) is not, and the Jacobian sin θ is small
+        // there).
+        float theta = std::atan2(std::sqrt(d.x * d.x + d.y * d.y), d.z);
+        return {spherical_phi(d) * (0.5f / kPi), std::clamp(theta * kInvPi, 0.0f, 1.0f)};
+    }
     case EnvLayout::Octahedral: {
         Point2f p = sphere_to_octahedral(d);
         return {std::clamp(0.5f * (p.x + 1), 0.0f, 1.0f), std::clamp(0.5f * (p.y + 1), 0.0f, 1.0f)};
@@ -177,8 +197,10 @@ Point2f env_uv(EnvLayout l, Vector3f d) {
 
 float env_jacobian(EnvLayout l, Point2f uv) {
     switch (l) {
-    case EnvLayout::LatLong: return 2 * kPi * kPi * std::sin(uv.y * kPi);
-    case EnvLayout::Octahedral: return 4 * kPi;
+    case EnvLayout::LatLong:
+        return 2 * kPi * kPi * std::sin(uv.y * kPi);
+    case EnvLayout::Octahedral:
+        return 4 * kPi;
     case EnvLayout::MirrorBall: {
         float a = 2 * uv.x - 1, b = 1 - 2 * uv.y;
         return a * a + b * b <= 1 ? 16.0f : 0.0f;

@@ -18,7 +18,8 @@ std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContex
     return LightLiSample{wi, l, biradiance(l, pdf), pdf, ss->p, ss->p_error, ss->n, false};
 }
 
-SolidAnglePdf DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, Vector3f wi, const SurfaceHit* hit) const {
+SolidAnglePdf DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, Vector3f wi,
+                                       const SurfaceHit* hit) const {
     if (!hit) return SolidAnglePdf(0);
     return SolidAnglePdf(shape_->pdf({ctx.p, ctx.p_error, ctx.n}, wi, hit->p, hit->n));
 }

@@ -12,9 +12,12 @@ namespace illum {
 class DirectionalLight final : public Light {
 public:
     // w_light: unit direction from the scene towards the light. e: irradiance on a perpendicular surface.
-    DirectionalLight(Vector3f w_light, Irradiance3 e) : Light(LightType::DeltaDirection), w_(w_light), e_(e) {}
+    DirectionalLight(Vector3f w_light, Irradiance3 e)
+        : Light(LightType::DeltaDirection), w_(w_light), e_(e) {}
 
-    void preprocess(const Bounds3f& scene_bounds) override { scene_bounds.bounding_sphere(&center_, &radius_); }
+    void preprocess(const Bounds3f& scene_bounds) override {
+        scene_bounds.bounding_sphere(&center_, &radius_);
+    }
 
     std::optional<LightLiSample> sample_li(const LightSampleContext&, Point2f) const override {
         // The struct's biradiance is the irradiance on a perpendicular surface (see light.h).

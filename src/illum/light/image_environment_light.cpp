@@ -4,10 +4,11 @@
 
 namespace illum {
 
-ImageEnvironmentLight::ImageEnvironmentLight(EnvironmentMap map, const Transform& world_from_light, float scale,
-                                             EnvSampling sampling)
-    : Light(LightType::Infinite), map_(std::move(map)), world_from_light_(world_from_light), light_from_world_(world_from_light.inverse()),
-      scale_(std::isfinite(scale) && scale > 0 ? scale : 0.0f), sampling_(sampling) {
+ImageEnvironmentLight::ImageEnvironmentLight(EnvironmentMap map, const Transform& world_from_light,
+                                             float scale, EnvSampling sampling)
+    : Light(LightType::Infinite), map_(std::move(map)), world_from_light_(world_from_light),
+      light_from_world_(world_from_light.inverse()), scale_(std::isfinite(scale) && scale > 0 ? scale : 0.0f),
+      sampling_(sampling) {
     int w = map_.width(), h = map_.height();
     const auto& sa = map_.solid_angles();
     std::vector<float> weights(std::size_t(w) * h);
@@ -54,7 +55,8 @@ std::optional<LightLiSample> ImageEnvironmentLight::sample_li(const LightSampleC
     Vector3f wi;
     SolidAnglePdf pdf;
     switch (sampling_) {
-    case EnvSampling::None: return std::nullopt;
+    case EnvSampling::None:
+        return std::nullopt;
     case EnvSampling::Uniform:
         wi = sample_uniform_sphere(u);
         pdf = SolidAnglePdf(uniform_sphere_pdf());
@@ -77,9 +79,12 @@ std::optional<LightLiSample> ImageEnvironmentLight::sample_li(const LightSampleC
 
 SolidAnglePdf ImageEnvironmentLight::pdf_li(const LightSampleContext&, Vector3f wi, const SurfaceHit*) const {
     switch (sampling_) {
-    case EnvSampling::None: return SolidAnglePdf(0);
-    case EnvSampling::Uniform: return SolidAnglePdf(uniform_sphere_pdf());
-    case EnvSampling::Importance: break;
+    case EnvSampling::None:
+        return SolidAnglePdf(0);
+    case EnvSampling::Uniform:
+        return SolidAnglePdf(uniform_sphere_pdf());
+    case EnvSampling::Importance:
+        break;
     }
     Vector3f d = light_from_world_(wi);
     float len = length(d);

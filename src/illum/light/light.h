@@ -53,9 +53,9 @@ struct LightLiSample {
 // `flux` is the one-sample estimate of the power the photon carries, so E[flux] = power():
 //   area / environment: L |cos θ| / (p_pos p_dir);  point / spot: I(ω) / p_dir;  directional: E / p_pos.
 struct LightLeSample {
-    Ray ray;             // origin on the light, unit direction of travel
-    Normal3f n;          // the emitter's normal at the origin; zero for points and infinite lights
-    Radiance3 radiance;  // radiance along the ray (zero for delta lights)
+    Ray ray;            // origin on the light, unit direction of travel
+    Normal3f n;         // the emitter's normal at the origin; zero for points and infinite lights
+    Radiance3 radiance; // radiance along the ray (zero for delta lights)
     AreaPdf pdf_pos;
     SolidAnglePdf pdf_dir;
     Power3 flux;

@@ -34,7 +34,8 @@ Vector3f unit_or_fail(const LightDesc& l, Vector3f v, const char* what) {
 
 std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext& ctx) {
     float scale = l.params.get_float("scale", 1);
-    if (!std::isfinite(scale) || scale < 0) throw Error(l.loc, fmt::format("light \"{}\": bad scale {}", l.type, scale));
+    if (!std::isfinite(scale) || scale < 0)
+        throw Error(l.loc, fmt::format("light \"{}\": bad scale {}", l.type, scale));
     if (l.type == "point") {
         Color3 i(1.0f);
         if (auto rgb = l.params.get_rgb("I")) i = *rgb;
@@ -51,12 +52,14 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
         float cone = l.params.get_float("coneangle", 30);
         float delta = l.params.get_float("conedelta", 5);
         if (!(cone > 0 && cone <= 180) || !(delta >= 0))
-            throw Error(l.loc, fmt::format("light \"spot\": coneangle must be in (0, 180] and conedelta >= 0, "
-                                           "not {} and {}",
-                                           cone, delta));
+            throw Error(l.loc,
+                        fmt::format("light \"spot\": coneangle must be in (0, 180] and conedelta >= 0, "
+                                    "not {} and {}",
+                                    cone, delta));
         Point3f p = l.world_from_light(from);
         Vector3f axis = unit_or_fail(l, l.world_from_light(to) - p, "the direction from \"from\" to \"to\"");
-        float cos_end = std::cos(cone * kDegrees), cos_start = std::cos(std::max(0.0f, cone - delta) * kDegrees);
+        float cos_end = std::cos(cone * kDegrees),
+              cos_start = std::cos(std::max(0.0f, cone - delta) * kDegrees);
         normalise_to_power(l, i, 2 * kPi * ((1 - cos_start) + (cos_start - cos_end) / 2));
         return std::make_unique<SpotLight>(p, axis, Intensity3(i * scale), cone * kDegrees, delta * kDegrees);
     }
@@ -75,11 +78,14 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
         float illuminance = l.params.get_float("illuminance", -1);
         std::string sampling_name = l.params.get_string("sampling", "importance");
         EnvSampling sampling = EnvSampling::Importance;
-        if (sampling_name == "uniform") sampling = EnvSampling::Uniform;
-        else if (sampling_name == "none") sampling = EnvSampling::None;
+        if (sampling_name == "uniform")
+            sampling = EnvSampling::Uniform;
+        else if (sampling_name == "none")
+            sampling = EnvSampling::None;
         else if (sampling_name != "importance")
-            throw Error(l.params.find("sampling")->loc,
-                        fmt::format("\"sampling\" must be importance, uniform or none, not \"{}\"", sampling_name));
+            throw Error(
+                l.params.find("sampling")->loc,
+                fmt::format("\"sampling\" must be importance, uniform or none, not \"{}\"", sampling_name));
         std::string filename = l.params.get_string("filename", "");
         if (!filename.empty()) {
             if (l.params.has("L"))
@@ -89,7 +95,8 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
             if (!layout_name.empty()) {
                 layout = env_layout_from_string(layout_name);
                 if (!layout)
-                    throw Error(l.params.find("layout")->loc, fmt::format("unknown layout \"{}\"", layout_name));
+                    throw Error(l.params.find("layout")->loc,
+                                fmt::format("unknown layout \"{}\"", layout_name));
             }
             EnvironmentMap map;
             try {
@@ -97,7 +104,8 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
             } catch (const Error& e) {
                 throw Error(l.params.find("filename")->loc, e.what());
             }
-            auto light = std::make_unique<ImageEnvironmentLight>(std::move(map), l.world_from_light, scale, sampling);
+            auto light =
+                std::make_unique<ImageEnvironmentLight>(std::move(map), l.world_from_light, scale, sampling);
             if (illuminance > 0) {
                 float e_up = light->upper_hemisphere_irradiance();
                 if (e_up > 0)
@@ -105,7 +113,8 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
                                                                     scale * illuminance / e_up, sampling);
             }
             if (light->map().mean_radiance().is_black())
-                ctx.unsupported(l.loc, fmt::format("environment map \"{}\" is black: it emits nothing", filename));
+                ctx.unsupported(l.loc,
+                                fmt::format("environment map \"{}\" is black: it emits nothing", filename));
             return light;
         }
         Color3 c(1.0f);

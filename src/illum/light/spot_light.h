@@ -16,7 +16,8 @@ class SpotLight final : public Light {
 public:
     // axis: unit direction the light points to; angles in radians (0 < start <= end <= π).
     SpotLight(Point3f position, Vector3f axis, Intensity3 intensity, float cone_angle, float cone_delta)
-        : Light(LightType::DeltaPosition), position_(position), frame_(Frame::from_z(axis)), intensity_(intensity) {
+        : Light(LightType::DeltaPosition), position_(position), frame_(Frame::from_z(axis)),
+          intensity_(intensity) {
         cone_angle = std::clamp(cone_angle, 1e-6f, kPi);
         float start = std::clamp(cone_angle - cone_delta, 0.0f, cone_angle);
         cos_end_ = std::cos(cone_angle);
