@@ -1,5 +1,8 @@
 #include "illum/light/diffuse_area_light.h"
 
+#include "illum/math/frame.h"
+#include "illum/math/warp.h"
+
 namespace illum {
 
 std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContext& ctx, Point2f u) const {
@@ -15,13 +18,40 @@ std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContex
     return LightLiSample{wi, l, biradiance(l, pdf), pdf, ss->p, ss->p_error, ss->n, false};
 }
 
-SolidAnglePdf DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, Vector3f wi, const SurfaceHit* hit) const {
+SolidAnglePdf DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, Vector3f wi,
+                                       const SurfaceHit* hit) const {
     if (!hit) return SolidAnglePdf(0);
     return SolidAnglePdf(shape_->pdf({ctx.p, ctx.p_error, ctx.n}, wi, hit->p, hit->n));
 }
 
 Power3 DiffuseAreaLight::power() const {
     return Power3(lambertian_exitance(radiance_).rgb * shape_->area() * (two_sided_ ? 2.0f : 1.0f));
+}
+
+std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2) const {
+    ShapeSample ss = shape_->sample_area(u1);
+    if (!(ss.pdf > 0)) return std::nullopt;
+    Vector3f n(ss.n);
+    float side_pmf = 1;
+    if (two_sided_) {
+        // Reuse u2.x for the side: remap it to [0, 1) within the half it fell in.
+        side_pmf = 0.5f;
+        if (u2.x < 0.5f) {
+            u2.x = std::min(u2.x * 2, 0x1.fffffep-1f);
+        } else {
+            u2.x = std::min((u2.x - 0.5f) * 2, 0x1.fffffep-1f);
+            n = -n;
+        }
+    }
+    Vector3f w_local = sample_cosine_hemisphere(u2);
+    float cos_theta = w_local.z;
+    if (!(cos_theta > 0)) return std::nullopt;
+    Vector3f w = Frame::from_z(n).to_world(w_local);
+    SolidAnglePdf pdf_dir(cosine_hemisphere_pdf(cos_theta) * side_pmf);
+    AreaPdf pdf_pos(ss.pdf);
+    Point3f o = offset_ray_origin(ss.p, ss.p_error, ss.n, w);
+    Radiance3 l = emitted(ss.n, w);
+    return LightLeSample{Ray{o, w}, ss.n, l, pdf_pos, pdf_dir, l * cos_theta / pdf_pos / pdf_dir};
 }
 
 } // namespace illum

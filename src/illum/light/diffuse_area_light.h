@@ -16,6 +16,9 @@ public:
     Radiance3 radiance(const SurfaceHit& hit, Vector3f w) const override { return emitted(hit.n, w); }
     // Φ = π A L for a one-sided Lambertian emitter, twice that for a two-sided one.
     Power3 power() const override;
+    // A point uniform by area, a cosine-weighted direction about its normal (either side with
+    // probability 1/2 when two-sided): flux = L cos θ / (p_A · cos θ / π) = π L / p_A (× 2 two-sided).
+    std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2) const override;
 
     Radiance3 emitted(Normal3f n, Vector3f w) const {
         if (!two_sided_ && dot(n, w) <= 0) return {};

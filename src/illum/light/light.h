@@ -46,6 +46,21 @@ struct LightLiSample {
     bool at_infinity = false;
 };
 
+// A photon leaving the light (light tracing, photon mapping): sample_le draws an origin and a direction.
+// The pdfs are kept apart, as bidirectional methods need them: pdf_pos is per unit area on the light (or
+// on the disk an infinite light emits from), and 1 as a probability for a delta position (point, spot);
+// pdf_dir is per steradian, and 1 as a probability for a delta direction (directional light).
+// `flux` is the one-sample estimate of the power the photon carries, so E[flux] = power():
+//   area / environment: L |cos θ| / (p_pos p_dir);  point / spot: I(ω) / p_dir;  directional: E / p_pos.
+struct LightLeSample {
+    Ray ray;            // origin on the light, unit direction of travel
+    Normal3f n;         // the emitter's normal at the origin; zero for points and infinite lights
+    Radiance3 radiance; // radiance along the ray (zero for delta lights)
+    AreaPdf pdf_pos;
+    SolidAnglePdf pdf_dir;
+    Power3 flux;
+};
+
 class Light {
 public:
     explicit Light(LightType type) : type_(type) {}
@@ -63,6 +78,9 @@ public:
     // Radiance arriving along a ray that leaves the scene (environment lights).
     virtual Radiance3 le(const Ray&) const { return {}; }
     virtual Power3 power() const = 0;
+    // Photon emission: an origin from u1 and a direction from u2 (see LightLeSample); nullopt when the
+    // light emits nothing there. Infinite and directional lights need preprocess() first.
+    virtual std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2) const = 0;
 
     // Position in the scene's light list, set by the scene (for selection pmfs).
     std::uint32_t index = 0;
@@ -70,5 +88,10 @@ public:
 private:
     LightType type_;
 };
+
+// A photon of an infinite light arriving from direction wi (towards the light) with radiance l: its
+// origin is uniform on the disk of radius r centred at c + r wi, facing -wi, so it covers the scene's
+// bounding sphere (centre c, radius r). p_pos = 1 / (π r²); the direction is perpendicular to the disk.
+LightLeSample disk_emission(Point3f c, float r, Vector3f wi, Point2f u, Radiance3 l, SolidAnglePdf pdf_dir);
 
 } // namespace illum

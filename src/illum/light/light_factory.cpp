@@ -2,36 +2,134 @@
 
 #include <fmt/format.h>
 
+#include "illum/light/directional_light.h"
+#include "illum/light/image_environment_light.h"
 #include "illum/light/point_light.h"
+#include "illum/light/spot_light.h"
 #include "illum/light/uniform_environment_light.h"
 
 namespace illum {
 
+namespace {
+
+constexpr float kDegrees = kPi / 180;
+
+// pbrt-v4: "power" rescales the emission so that the light's total power (in luminance) is the value.
+void normalise_to_power(const LightDesc& l, Color3& c, float power_per_unit) {
+    float power = l.params.get_float("power", -1);
+    if (power > 0) {
+        float lum = c.luminance() * power_per_unit;
+        if (lum > 0) c *= power / lum;
+    }
+}
+
+Vector3f unit_or_fail(const LightDesc& l, Vector3f v, const char* what) {
+    float len = length(v);
+    if (!(len > 0) || !std::isfinite(len))
+        throw Error(l.loc, fmt::format("light \"{}\": {} must be a non-zero direction", l.type, what));
+    return v / len;
+}
+
+} // namespace
+
 std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext& ctx) {
     float scale = l.params.get_float("scale", 1);
+    if (!std::isfinite(scale) || scale < 0)
+        throw Error(l.loc, fmt::format("light \"{}\": bad scale {}", l.type, scale));
     if (l.type == "point") {
         Color3 i(1.0f);
         if (auto rgb = l.params.get_rgb("I")) i = *rgb;
         Point3f from = l.params.get_point3("from").value_or(Point3f{0, 0, 0});
         Point3f p = l.world_from_light(from);
-        float power = l.params.get_float("power", -1);
-        if (power > 0) {
-            // pbrt-v4: scale so the total power 4π I (in luminance) equals the given power.
-            float lum = i.luminance();
-            if (lum > 0) i *= power / (4 * kPi * lum);
-        }
+        normalise_to_power(l, i, 4 * kPi); // Φ = 4π I
         return std::make_unique<PointLight>(p, Intensity3(i * scale));
     }
+    if (l.type == "spot") {
+        Color3 i(1.0f);
+        if (auto rgb = l.params.get_rgb("I")) i = *rgb;
+        Point3f from = l.params.get_point3("from").value_or(Point3f{0, 0, 0});
+        Point3f to = l.params.get_point3("to").value_or(Point3f{0, 0, 1});
+        float cone = l.params.get_float("coneangle", 30);
+        float delta = l.params.get_float("conedelta", 5);
+        if (!(cone > 0 && cone <= 180) || !(delta >= 0))
+            throw Error(l.loc,
+                        fmt::format("light \"spot\": coneangle must be in (0, 180] and conedelta >= 0, "
+                                    "not {} and {}",
+                                    cone, delta));
+        Point3f p = l.world_from_light(from);
+        Vector3f axis = unit_or_fail(l, l.world_from_light(to) - p, "the direction from \"from\" to \"to\"");
+        float cos_end = std::cos(cone * kDegrees),
+              cos_start = std::cos(std::max(0.0f, cone - delta) * kDegrees);
+        normalise_to_power(l, i, 2 * kPi * ((1 - cos_start) + (cos_start - cos_end) / 2));
+        return std::make_unique<SpotLight>(p, axis, Intensity3(i * scale), cone * kDegrees, delta * kDegrees);
+    }
+    if (l.type == "distant") {
+        Color3 e(1.0f);
+        if (auto rgb = l.params.get_rgb("L")) e = *rgb;
+        Point3f from = l.params.get_point3("from").value_or(Point3f{0, 0, 0});
+        Point3f to = l.params.get_point3("to").value_or(Point3f{0, 0, 1});
+        // Light travels from `from` towards `to`; the light lies in direction from - to.
+        Vector3f w = unit_or_fail(l, l.world_from_light(from - to), "the direction from \"to\" to \"from\"");
+        float illuminance = l.params.get_float("illuminance", -1);
+        if (illuminance > 0 && e.luminance() > 0) e *= illuminance / e.luminance();
+        return std::make_unique<DirectionalLight>(w, Irradiance3(e * scale));
+    }
     if (l.type == "infinite") {
-        if (l.params.has("filename")) {
-            l.params.find("filename")->used = true;
-            ctx.unsupported(l.loc, "environment map images are not supported yet; using a constant environment");
+        float illuminance = l.params.get_float("illuminance", -1);
+        std::string sampling_name = l.params.get_string("sampling", "importance");
+        EnvSampling sampling = EnvSampling::Importance;
+        if (sampling_name == "uniform")
+            sampling = EnvSampling::Uniform;
+        else if (sampling_name == "none")
+            sampling = EnvSampling::None;
+        else if (sampling_name != "importance")
+            throw Error(
+                l.params.find("sampling")->loc,
+                fmt::format("\"sampling\" must be importance, uniform or none, not \"{}\"", sampling_name));
+        std::string filename = l.params.get_string("filename", "");
+        if (!filename.empty()) {
+            if (l.params.has("L"))
+                ctx.unsupported(l.loc, "\"L\" is ignored for an environment light with a \"filename\"");
+            std::optional<EnvLayout> layout;
+            std::string layout_name = l.params.get_string("layout", ""); // illum extension
+            if (!layout_name.empty()) {
+                layout = env_layout_from_string(layout_name);
+                if (!layout)
+                    throw Error(l.params.find("layout")->loc,
+                                fmt::format("unknown layout \"{}\"", layout_name));
+            }
+            EnvironmentMap map;
+            try {
+                map = EnvironmentMap::load(filename, layout);
+            } catch (const Error& e) {
+                throw Error(l.params.find("filename")->loc, e.what());
+            }
+            auto light =
+                std::make_unique<ImageEnvironmentLight>(std::move(map), l.world_from_light, scale, sampling);
+            if (illuminance > 0) {
+                float e_up = light->upper_hemisphere_irradiance();
+                if (e_up > 0)
+                    light = std::make_unique<ImageEnvironmentLight>(light->map(), l.world_from_light,
+                                                                    scale * illuminance / e_up, sampling);
+            }
+            if (light->map().mean_radiance().is_black())
+                ctx.unsupported(l.loc,
+                                fmt::format("environment map \"{}\" is black: it emits nothing", filename));
+            return light;
         }
         Color3 c(1.0f);
         if (auto rgb = l.params.get_rgb("L")) c = *rgb;
+        // A constant environment L gives illuminance π L on an upward surface.
+        if (illuminance > 0 && c.luminance() > 0) c *= illuminance / (kPi * c.luminance());
+        if (sampling != EnvSampling::Importance) {
+            // Let the image light implement the sampling modes on a one-texel map.
+            Image img(2, 1, c);
+            return std::make_unique<ImageEnvironmentLight>(EnvironmentMap(std::move(img), EnvLayout::LatLong),
+                                                           l.world_from_light, scale, sampling);
+        }
         return std::make_unique<UniformEnvironmentLight>(Radiance3(c * scale));
     }
-    if (l.type == "distant" || l.type == "spot" || l.type == "goniometric" || l.type == "projection") {
+    if (l.type == "goniometric" || l.type == "projection") {
         ctx.unsupported(l.loc, fmt::format("light \"{}\" is not supported yet and is skipped", l.type));
         return nullptr;
     }

@@ -11,8 +11,7 @@ public:
     explicit UniformEnvironmentLight(Radiance3 radiance) : Light(LightType::Infinite), radiance_(radiance) {}
 
     void preprocess(const Bounds3f& scene_bounds) override {
-        Point3f c;
-        scene_bounds.bounding_sphere(&c, &scene_radius_);
+        scene_bounds.bounding_sphere(&scene_center_, &scene_radius_);
     }
     std::optional<LightLiSample> sample_li(const LightSampleContext&, Point2f u) const override {
         Vector3f wi = sample_uniform_sphere(u);
@@ -28,8 +27,24 @@ public:
         return Power3(radiance_.rgb * (4 * kPi * kPi * scene_radius_ * scene_radius_));
     }
 
+    // A uniform direction, then a point on the disk of the scene's radius perpendicular to it, outside
+    // the scene: flux = L / (p_pos p_dir) = 4π · π r² · L on average (exactly, for a constant map).
+    std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2) const override {
+        if (!(scene_radius_ > 0)) return std::nullopt;
+        Vector3f wi = sample_uniform_sphere(u2); // towards the environment
+        SolidAnglePdf pdf_dir(uniform_sphere_pdf());
+        return emit_from_disk(wi, u1, radiance_, pdf_dir);
+    }
+
+    // The photon for incident direction wi (towards the environment) of radiance l: it starts on the
+    // disk of radius r centred at c + r wi, perpendicular to wi, and travels along -wi.
+    LightLeSample emit_from_disk(Vector3f wi, Point2f u1, Radiance3 l, SolidAnglePdf pdf_dir) const {
+        return disk_emission(scene_center_, scene_radius_, wi, u1, l, pdf_dir);
+    }
+
 private:
     Radiance3 radiance_;
+    Point3f scene_center_;
     float scene_radius_ = 0;
 };
 

@@ -1,0 +1,70 @@
+// A spot light: a point source of intensity I inside a cone about its axis, with pbrt-v4's smooth
+// falloff: I(θ) = I · smoothstep(cos θ; cos θ_end, cos θ_start), where θ_end is the cone angle and
+// θ_start = θ_end - δ (the cone delta). Smoothstep s(t) = 3t² - 2t³ integrates to 1/2 over [0, 1], so the
+// power is exactly Φ = 2π I [(1 - cos θ_start) + (cos θ_start - cos θ_end) / 2].
+#pragma once
+
+#include <algorithm>
+
+#include "illum/light/light.h"
+#include "illum/math/frame.h"
+#include "illum/math/warp.h"
+
+namespace illum {
+
+class SpotLight final : public Light {
+public:
+    // axis: unit direction the light points to; angles in radians (0 < start <= end <= π).
+    SpotLight(Point3f position, Vector3f axis, Intensity3 intensity, float cone_angle, float cone_delta)
+        : Light(LightType::DeltaPosition), position_(position), frame_(Frame::from_z(axis)),
+          intensity_(intensity) {
+        cone_angle = std::clamp(cone_angle, 1e-6f, kPi);
+        float start = std::clamp(cone_angle - cone_delta, 0.0f, cone_angle);
+        cos_end_ = std::cos(cone_angle);
+        cos_start_ = std::cos(start);
+    }
+
+    // The falloff factor in [0, 1] for a direction cos θ from the axis.
+    float falloff(float cos_theta) const {
+        if (cos_theta >= cos_start_) return 1;
+        if (cos_theta <= cos_end_) return 0;
+        float t = (cos_theta - cos_end_) / (cos_start_ - cos_end_);
+        return t * t * (3 - 2 * t);
+    }
+    Intensity3 intensity(Vector3f w_world) const { return intensity_ * falloff(dot(w_world, frame_.n)); }
+
+    std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f) const override {
+        Vector3f d = position_ - ctx.p;
+        float d2 = length_squared(d);
+        if (d2 == 0) return std::nullopt;
+        Vector3f wi = d / std::sqrt(d2);
+        Intensity3 i = intensity(-wi);
+        if (i.is_black()) return std::nullopt;
+        return LightLiSample{wi, {}, biradiance(i, d2), SolidAnglePdf(1), position_, {}, {}, false};
+    }
+    SolidAnglePdf pdf_li(const LightSampleContext&, Vector3f, const SurfaceHit*) const override {
+        return SolidAnglePdf(0);
+    }
+    Power3 power() const override {
+        return Power3(intensity_.rgb * (2 * kPi * ((1 - cos_start_) + (cos_start_ - cos_end_) / 2)));
+    }
+    // Uniform within the cone θ <= θ_end: flux = I(θ) / p_dir.
+    std::optional<LightLeSample> sample_le(Point2f, Point2f u2) const override {
+        Vector3f w = frame_.to_world(sample_uniform_cone(u2, cos_end_));
+        SolidAnglePdf pdf_dir(uniform_cone_pdf(cos_end_));
+        Intensity3 i = intensity(w);
+        return LightLeSample{Ray{position_, w}, {}, {}, AreaPdf(1), pdf_dir, i / pdf_dir};
+    }
+    Point3f position() const { return position_; }
+    Vector3f axis() const { return frame_.n; }
+    float cos_start() const { return cos_start_; }
+    float cos_end() const { return cos_end_; }
+
+private:
+    Point3f position_;
+    Frame frame_;
+    Intensity3 intensity_;
+    float cos_start_ = 1, cos_end_ = 0;
+};
+
+} // namespace illum
