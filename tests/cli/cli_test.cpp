@@ -128,6 +128,18 @@ TEST_F(Cli, TimeBudgetRendersWholePasses) {
     EXPECT_GE(double(stats["seconds"]), 0.3);
 }
 
+TEST_F(Cli, UnusedParametersWarnAndStrictRefuses) {
+    write_text(dir_ / "u.pbrt", "Film \"rgb\" \"integer xresolution\" [8] \"integer yresolution\" [8]\n"
+                                "WorldBegin\nShape \"sphere\" \"float radius\" [1] \"float radiuss\" [2]\n");
+    CliRun r = illum("render u.pbrt --spp 1 -o u.exr", dir_);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("warning: u.pbrt:3:35: shape \"sphere\": parameter \"float radiuss\" is not used"),
+              std::string::npos)
+        << r.err;
+    expect_error(illum("render u.pbrt --spp 1 --strict -o v.exr", dir_), "u.pbrt:3:35:");
+    EXPECT_FALSE(fs::exists(dir_ / "v.exr"));
+}
+
 TEST_F(Cli, MissingSceneFile) {
     expect_error(illum("render nowhere.pbrt -o x.exr", dir_), "nowhere.pbrt");
     EXPECT_FALSE(fs::exists(dir_ / "x.exr"));

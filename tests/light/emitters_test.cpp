@@ -220,14 +220,16 @@ TEST(SceneLights, DistantSpotPoint) {
             s),
         6 * std::cos(kPiD / 4) / kPiD, "distant at 45 degrees");
     {
-        // "illuminance" sets the luminance of the irradiance: the plane's luminance is 5 / π.
+        // "illuminance" multiplies the RGB as pbrt-v4 does (its photometric normalisation leaves an RGB
+        // multiplier as it is): E = 5 (1, 2, 3) on a perpendicular surface, so the white plane shows
+        // E/π, of luminance 5 lum(1, 2, 3) / π.
         auto r = test::render_pbrt(
             receiver(
                 R"(LightSource "distant" "point3 from" [0 0 1] "point3 to" [0 0 0] "rgb L" [1 2 3] "float illuminance" 5)"),
             s);
         Color3 m(float(test::pixel_mean(r.image, 0).mean), float(test::pixel_mean(r.image, 1).mean),
                  float(test::pixel_mean(r.image, 2).mean));
-        EXPECT_NEAR(m.luminance(), 5 / kPi, 1e-3);
+        EXPECT_NEAR(m.luminance(), 5 * Color3(1, 2, 3).luminance() / kPi, 1e-3);
         EXPECT_NEAR(m[1] / m[0], 2, 1e-4);
     }
     // Spot on its axis: I / h²; outside its cone: nothing.

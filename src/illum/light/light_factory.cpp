@@ -14,12 +14,15 @@ namespace {
 
 constexpr float kDegrees = kPi / 180;
 
-// pbrt-v4: "power" rescales the emission so that the light's total power (in luminance) is the value.
+// pbrt-v4: "power" Φ multiplies the emission by Φ / k_e, k_e being the power of a unit emitter of the
+// light's shape (4π for a point). pbrt-v4 normalises a light's spectrum by its illuminant only and leaves an
+// RGB multiplier as it is ("we should consider the RGB separately ... but we currently don't", its
+// SpectrumToPhotometric), so "rgb I" [10 10 10] with "power" [100] is 10 times brighter than [1 1 1]; scenes
+// are written for that behaviour, so illum keeps it.
 void normalise_to_power(const LightDesc& l, Color3& c, float power_per_unit) {
     float power = l.params.get_float("power", -1);
     if (power > 0) {
-        float lum = c.luminance() * power_per_unit;
-        if (lum > 0) c *= power / lum;
+        c *= power / power_per_unit;
     }
 }
 
@@ -71,7 +74,7 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
         // Light travels from `from` towards `to`; the light lies in direction from - to.
         Vector3f w = unit_or_fail(l, l.world_from_light(from - to), "the direction from \"to\" to \"from\"");
         float illuminance = l.params.get_float("illuminance", -1);
-        if (illuminance > 0 && e.luminance() > 0) e *= illuminance / e.luminance();
+        if (illuminance > 0) e *= illuminance; // pbrt-v4: the RGB multiplier is kept, as for "power"
         return std::make_unique<DirectionalLight>(w, Irradiance3(e * scale));
     }
     if (l.type == "infinite") {
@@ -120,7 +123,7 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
         Color3 c(1.0f);
         if (auto rgb = l.params.get_rgb("L")) c = *rgb;
         // A constant environment L gives illuminance π L on an upward surface.
-        if (illuminance > 0 && c.luminance() > 0) c *= illuminance / (kPi * c.luminance());
+        if (illuminance > 0) c *= illuminance / kPi; // pbrt-v4: the RGB multiplier is kept, as for "power"
         if (sampling != EnvSampling::Importance) {
             // Let the image light implement the sampling modes on a one-texel map.
             Image img(2, 1, c);

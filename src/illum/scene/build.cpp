@@ -32,6 +32,7 @@ public:
         for (const ShapeDesc& s : desc_.shapes) build_shape(s);
         for (const LightDesc& l : desc_.lights) build_light(l);
         build_instances();
+        report_unused_parameters();
         scene_->warnings.insert(scene_->warnings.begin(), desc_.warnings.begin(), desc_.warnings.end());
         scene_->finalize();
         return std::move(scene_);
@@ -45,6 +46,26 @@ private:
         for (auto& existing : scene_->warnings)
             if (existing == w) return;
         scene_->warnings.push_back(w);
+    }
+
+    // pbrt-v4 rejects parameters that nothing reads; illum warns (an error under --strict), naming each one,
+    // so a misspelt or unsupported parameter never changes the image silently.
+    void report_unused_parameters() {
+        auto check = [&](const EntityDesc& e, const char* what) {
+            for (const Param* p : e.params.unused())
+                unsupported(p->loc, fmt::format("{} \"{}\": parameter \"{} {}\" is not used", what, e.type,
+                                                to_string(p->type), p->name));
+        };
+        check(desc_.camera, "camera");
+        check(desc_.film, "film");
+        check(desc_.sampler, "sampler");
+        check(desc_.filter, "pixel filter");
+        check(desc_.integrator, "integrator");
+        for (const auto& m : desc_.materials) check(m, "material");
+        for (const auto& t : desc_.textures) check(t, "texture");
+        for (const auto& sh : desc_.shapes) check(sh, "shape");
+        for (const auto& a : desc_.area_lights) check(a, "area light");
+        for (const auto& l : desc_.lights) check(l, "light");
     }
 
     void build_film_and_camera() {
@@ -440,14 +461,23 @@ private:
     }
 
     void layered_warnings(const EntityDesc& m, const char* rough_name) {
-        const Param* r = m.params.find(rough_name);
-        if (!r)
-            r = m.params.find(
-                std::string(rough_name).replace(std::string(rough_name).find("roughness"), 9, "uroughness"));
+        // The coat's roughness: "roughness", or "uroughness"/"vroughness" (with any prefix, as in
+        // "interface.roughness"). All of them are read here, so none is reported unused.
+        std::string base(rough_name), u = base, v = base;
+        std::size_t at = base.find("roughness");
+        u.replace(at, 9, "uroughness");
+        v.replace(at, 9, "vroughness");
         // pbrt-v4 treats α < 1e-3 as smooth; illum's coat is always smooth, so warn from α > 2e-3 on.
         bool remap = m.params.get_bool("remaproughness", true);
-        auto alpha = [&](float v) { return remap ? std::sqrt(std::max(v, 0.0f)) : v; };
-        if (r && (r->type != ParamType::Float || alpha(m.params.get_float(r->name, 0)) > 2e-3f))
+        auto alpha = [&](float x) { return remap ? std::sqrt(std::max(x, 0.0f)) : x; };
+        const Param* r = nullptr;
+        for (const std::string& name : {base, u, v}) {
+            const Param* p = m.params.find(name);
+            if (!p) continue;
+            p->used = true;
+            if (!r && (p->type != ParamType::Float || alpha(m.params.get_float(p->name, 0)) > 2e-3f)) r = p;
+        }
+        if (r)
             unsupported(r->loc, fmt::format("a rough coat (\"{}\") is rendered smooth", r->name));
         if (m.params.has("albedo")) {
             const Param* a = m.params.find("albedo");
