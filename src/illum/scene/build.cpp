@@ -1,5 +1,9 @@
 #include "illum/scene/build.h"
 
+#include "illum/analysis/albedo.h"
+#include "illum/bsdf/registry.h"
+#include "illum/bsdf/shared_bxdf_material.h"
+
 #include <cmath>
 #include <fmt/format.h>
 
@@ -490,6 +494,52 @@ private:
         if (m.params.has("g")) m.params.get_float("g", 0);
     }
 
+    // illum's own reflection models (`illum brdf list`) by name, with constant parameters, e.g.
+    //   Material "ward" "rgb rd" [0.2 0.1 0.05] "rgb rs" [0.04 0.04 0.04] "float alpha_x" [0.1]
+    // (pbrt-v4's names come first: "conductor" and "dielectric" take pbrt-v4's parameters). The model is
+    // built once and shared by every hit.
+    const Material* model_material(const EntityDesc& m, const ModelSpec& spec) {
+        std::map<std::string, std::string> values;
+        for (const Param& p : m.params.params()) {
+            if (p.name == "type") continue; // MakeNamedMaterial's own
+            p.used = true;
+            auto number = [](double v) { return fmt::format("{}", v); };
+            switch (p.type) {
+            case ParamType::Float:
+            case ParamType::Integer:
+                if (p.numbers.size() == 1) values[p.name] = number(p.numbers[0]);
+                break;
+            case ParamType::RGB:
+                if (p.numbers.size() == 3)
+                    values[p.name] = number(p.numbers[0]) + "," + number(p.numbers[1]) + "," + number(p.numbers[2]);
+                break;
+            case ParamType::String:
+                if (p.strings.size() == 1) values[p.name] = p.strings[0];
+                break;
+            case ParamType::Bool:
+                if (p.bools.size() == 1) values[p.name] = p.bools[0] ? "true" : "false";
+                break;
+            default:
+                unsupported(p.loc, fmt::format("material \"{}\": a {} parameter (\"{}\") is not supported for "
+                                               "illum's models yet; using its default",
+                                               spec.name, to_string(p.type), p.name));
+                continue;
+            }
+            if (!values.count(p.name))
+                m.params.fail(p, fmt::format("parameter \"{}\" of material \"{}\" needs one value", p.name, spec.name));
+        }
+        std::unique_ptr<BxDF> bxdf;
+        try {
+            bxdf = make_bxdf(spec.name, values);
+        } catch (const Error& e) {
+            throw Error(m.loc, e.what());
+        }
+        // The albedo pass shows the directional albedo at normal incidence.
+        AlbedoEstimate a = directional_albedo(*bxdf, {0, 0, 1}, spec.delta, 16, 4096, 1);
+        return own(std::make_unique<SharedBxDFMaterial>(std::move(bxdf),
+                                                        Color3(float(a.mc[0]), float(a.mc[1]), float(a.mc[2]))));
+    }
+
     const Material* make_material(const EntityDesc& m, const std::string& type) {
         if (type == "diffuse")
             return own(std::make_unique<DiffuseMaterial>(color_param(m, "reflectance", Color3(0.5f))));
@@ -541,6 +591,8 @@ private:
             for (const Param& p : m.params.params()) p.used = true;
             return own(std::make_unique<DiffuseMaterial>(constant_color(Color3(0.5f))));
         }
+        for (const ModelSpec& spec : bxdf_models())
+            if (spec.name == type) return model_material(m, spec);
         throw Error(m.loc, fmt::format("unknown material type \"{}\"", type));
     }
 
