@@ -37,15 +37,22 @@ inline float fresnel_dielectric(float cos_i, float eta) {
 
 // Exact unpolarised Fresnel reflectance of a conductor of complex relative index eta + i k, for light
 // arriving from outside (|cos_i| is used). With k = 0 and eta >= 1 it equals fresnel_dielectric.
-inline float fresnel_complex(float cos_i, std::complex<float> eta) {
-    using C = std::complex<float>;
-    cos_i = std::clamp(std::abs(cos_i), 0.0f, 1.0f);
-    float sin2_i = 1 - cos_i * cos_i;
-    C sin2_t = sin2_i / (eta * eta);
-    C cos_t = std::sqrt(C(1) - sin2_t);
-    C r_par = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    C r_perp = (C(cos_i) - eta * cos_t) / (C(cos_i) + eta * cos_t);
-    return 0.5f * (std::norm(r_par) + std::norm(r_perp));
+inline float fresnel_complex(float cos_i, std::complex<float> eta_k) {
+    // The real closed form for an absorbing medium (Born & Wolf, Principles of Optics, §14.2): with
+    // t0 = η² − k² − sin²θ and a² + b² = sqrt(t0² + 4η²k²), a² = (a² + b² + t0)/2,
+    //   R_s = (a² + b² − 2a cos θ + cos²θ) / (a² + b² + 2a cos θ + cos²θ),
+    //   R_p = R_s (cos²θ (a² + b²) − 2a cos θ sin²θ + sin⁴θ) / (cos²θ (a² + b²) + 2a cos θ sin²θ + sin⁴θ),
+    // F = (R_s + R_p)/2. Equal to the complex Snell-Fresnel form, without complex division (a library call).
+    float eta = eta_k.real(), k = eta_k.imag();
+    float c = std::clamp(std::abs(cos_i), 0.0f, 1.0f), c2 = c * c, s2 = 1 - c2;
+    float t0 = eta * eta - k * k - s2;
+    float a2b2 = std::sqrt(std::max(0.0f, t0 * t0 + 4 * eta * eta * k * k));
+    float a = std::sqrt(std::max(0.0f, 0.5f * (a2b2 + t0)));
+    float t1 = a2b2 + c2, t2 = 2 * a * c;
+    float rs = (t1 - t2) / (t1 + t2);
+    float t3 = c2 * a2b2 + s2 * s2, t4 = t2 * s2;
+    float rp = rs * (t3 - t4) / (t3 + t4);
+    return 0.5f * (rs + rp);
 }
 
 inline Color3 fresnel_complex(float cos_i, Color3 eta, Color3 k) {

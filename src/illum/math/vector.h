@@ -50,7 +50,11 @@ struct Vector3f {
     constexpr Vector3f operator-(Vector3f o) const { return {x - o.x, y - o.y, z - o.z}; }
     constexpr Vector3f operator-() const { return {-x, -y, -z}; }
     constexpr Vector3f operator*(float s) const { return {x * s, y * s, z * s}; }
-    constexpr Vector3f operator/(float s) const { return {x / s, y / s, z / s}; }
+    // One division and three multiplications (as pbrt does): division is the slowest arithmetic there is.
+    constexpr Vector3f operator/(float s) const {
+        float inv = 1 / s;
+        return {x * inv, y * inv, z * inv};
+    }
     Vector3f& operator+=(Vector3f o) { return *this = *this + o; }
     Vector3f& operator-=(Vector3f o) { return *this = *this - o; }
     Vector3f& operator*=(float s) { return *this = *this * s; }

@@ -36,11 +36,11 @@ std::optional<SamplerKind> parse_sampler_kind(std::string_view name);
 namespace sampling_detail {
 
 inline uint32_t reverse_bits(uint32_t v) {
+    // Bits within each byte, then the bytes by one byte swap.
     v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
     v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
     v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
-    v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
-    return (v >> 16) | (v << 16);
+    return __builtin_bswap32(v);
 }
 
 // Sobol dimension 0: the van der Corput radical inverse in base 2, as a 32-bit fraction.
