@@ -1,5 +1,5 @@
 #!/bin/sh
-# Regenerates the albedo table of docs/brdf.md: directional albedo of every model (importance mode, RGB).
+# Regenerates the albedo table of docs/verification.md ("Reflection models"): directional albedo of every model (importance mode, RGB).
 I=${ILLUM:-./build/illum}
 run() { "$I" brdf albedo "$@" --theta 0,30,60,80 --samples 100000 --quad 256 | sed 's/^/    /'; echo; }
 run lambert
