@@ -51,6 +51,51 @@ TEST(ModelMaterials, RegistryLambertIsPbrtDiffuse) {
     EXPECT_TRUE(a == b) << "the same model, sampled the same way, gives the same pixels";
 }
 
+// A textured parameter is evaluated per hit and the model placed in the arena; with a constant texture it
+// must give the very pixels of the constant parameter (same model, same sampling).
+TEST(ModelMaterials, TexturedParametersMatchConstantOnes) {
+    test::RenderSetup s;
+    s.spp = 4;
+    for (const char* model : {"oren-nayar", "ward", "phong", "rough-conductor"}) {
+        const ModelSpec& spec = find_bxdf_model(model);
+        std::string rgb_param;
+        for (const ParamSpec& p : spec.params)
+            if (p.kind == ParamKind::Rgb && rgb_param.empty()) rgb_param = p.name;
+        ASSERT_FALSE(rgb_param.empty()) << model;
+        std::string constant = fmt::format(R"(Material "{}" "rgb {}" [0.3 0.2 0.1])", model, rgb_param);
+        std::string textured = fmt::format(R"(Texture "t" "spectrum" "constant" "rgb value" [0.3 0.2 0.1]
+Material "{}" "texture {}" "t")",
+                                           model, rgb_param);
+        Image a = test::render_pbrt(sphere_scene(constant), s).image;
+        Image b = test::render_pbrt(sphere_scene(textured), s).image;
+        EXPECT_TRUE(a == b) << model << " " << rgb_param;
+    }
+}
+
+TEST(ModelMaterials, CheckerboardAndClampedTextures) {
+    test::RenderSetup s;
+    s.spp = 4;
+    // A checkerboard of two reflectances on the sphere: both levels show.
+    std::string checker = R"(Texture "lo" "spectrum" "constant" "rgb value" [0.05 0.05 0.05]
+Texture "hi" "spectrum" "constant" "rgb value" [0.9 0.9 0.9]
+Texture "c" "spectrum" "checkerboard" "texture tex1" "lo" "texture tex2" "hi" "float uscale" [8] "float vscale" [8]
+Material "oren-nayar" "texture reflectance" "c" "float sigma" [20])";
+    // Both levels show: the image lies well between the all-dark and the all-bright sphere.
+    float mid = test::render_pbrt(sphere_scene(checker), s).image.channel_mean().g;
+    float lo = test::render_pbrt(sphere_scene(R"(Material "oren-nayar" "rgb reflectance" [0.05 0.05 0.05] "float sigma" [20])"), s)
+                   .image.channel_mean().g;
+    float hi = test::render_pbrt(sphere_scene(R"(Material "oren-nayar" "rgb reflectance" [0.9 0.9 0.9] "float sigma" [20])"), s)
+                   .image.channel_mean().g;
+    EXPECT_GT(mid, lo + 0.2f * (hi - lo));
+    EXPECT_LT(mid, hi - 0.2f * (hi - lo));
+    // A texture beyond the parameter's range is clamped to it: reflectance 5 acts as 1.
+    std::string five = R"(Texture "f" "spectrum" "constant" "rgb value" [5 5 5]
+Material "oren-nayar" "texture reflectance" "f")";
+    Image a = test::render_pbrt(sphere_scene(five), s).image;
+    Image b = test::render_pbrt(sphere_scene(R"(Material "oren-nayar" "rgb reflectance" [1 1 1])"), s).image;
+    EXPECT_TRUE(a == b);
+}
+
 TEST(ModelMaterials, ParametersAreCheckedWithTheirPosition) {
     try {
         test::render_pbrt(sphere_scene("\n\nMaterial \"ward\" \"float alpha_x\" [-1]"));

@@ -10,6 +10,9 @@
 #include <vector>
 
 #include "illum/bsdf/bxdf.h"
+#include "illum/geometry/surface_hit.h"
+#include "illum/texture/texture.h"
+#include "illum/util/arena.h"
 
 namespace illum {
 
@@ -40,6 +43,47 @@ private:
     std::map<std::string, std::string> values_;
 };
 
+// Parameter values at one shading point, for placing a model in the per-thread arena: constants, or
+// textures evaluated at the hit. Values are clamped to each parameter's range, so a texture cannot make a
+// model invalid in the middle of a render. Lookups compare names; nothing is allocated.
+class ShadingArgs {
+public:
+    struct Value {
+        std::string name;
+        ParamKind kind = ParamKind::Scalar;
+        Color3 constant;                       // Scalar, Rgb, Integer (in .r)
+        std::string text;                      // Choice, Path
+        const ColorTexture* color = nullptr;   // a textured Rgb parameter
+        const FloatTexture* scalar = nullptr;  // a textured Scalar parameter
+        float lo = 0, hi = 0;
+    };
+    ShadingArgs(const std::vector<Value>& values, const SurfaceHit& hit) : values_(values), hit_(hit) {}
+
+    bool has(const std::string& name) const { return find(name) != nullptr; }
+    float scalar(const std::string& name) const;
+    Color3 rgb(const std::string& name) const;
+    int integer(const std::string& name) const { return int(scalar(name)); }
+    const std::string& str(const std::string& name) const;
+
+private:
+    const Value& get(const std::string& name) const;
+    const Value* find(const std::string& name) const {
+        for (const Value& v : values_)
+            if (v.name == name) return &v;
+        return nullptr;
+    }
+    const std::vector<Value>& values_;
+    const SurfaceHit& hit_;
+};
+
+// A model's constructors: on the heap from validated values (tools, audits, constant materials), or in
+// the arena from a shading point's values (textured materials; null for a model that cannot be placed
+// there, such as the measured one with its shared table).
+struct ModelFactory {
+    std::function<std::unique_ptr<BxDF>(const ParamValues&)> make;
+    std::function<const BxDF*(const ShadingArgs&, ScratchArena&)> place;
+};
+
 struct AuditCase {
     std::map<std::string, std::string> params;
     bool lossless = false; // albedo must be 1 (within error) at every angle
@@ -54,7 +98,9 @@ struct ModelSpec {
     bool non_physical = false; // reciprocity and energy are reported, not required
     bool stochastic = false;   // f() is a stochastic estimate and pdf() approximate
     std::string eta_param;     // interior index for generalised reciprocity of transmission
-    std::function<std::unique_ptr<BxDF>(const ParamValues&)> make;
+    ModelFactory factory;
+
+    std::unique_ptr<BxDF> make(const ParamValues& values) const { return factory.make(values); }
 };
 
 const std::vector<ModelSpec>& bxdf_models();

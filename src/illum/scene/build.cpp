@@ -3,6 +3,7 @@
 #include "illum/analysis/albedo.h"
 #include "illum/bsdf/registry.h"
 #include "illum/bsdf/shared_bxdf_material.h"
+#include "illum/bsdf/textured_model_material.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -500,6 +501,7 @@ private:
     // built once and shared by every hit.
     const Material* model_material(const EntityDesc& m, const ModelSpec& spec) {
         std::map<std::string, std::string> values;
+        std::map<std::string, const Param*> textured;
         for (const Param& p : m.params.params()) {
             if (p.name == "type") continue; // MakeNamedMaterial's own
             p.used = true;
@@ -519,25 +521,53 @@ private:
             case ParamType::Bool:
                 if (p.bools.size() == 1) values[p.name] = p.bools[0] ? "true" : "false";
                 break;
+            case ParamType::Texture: textured[p.name] = &p; continue;
             default:
-                unsupported(p.loc, fmt::format("material \"{}\": a {} parameter (\"{}\") is not supported for "
-                                               "illum's models yet; using its default",
-                                               spec.name, to_string(p.type), p.name));
-                continue;
+                m.params.fail(p, fmt::format("material \"{}\": parameter \"{}\" cannot be of type {}", spec.name,
+                                             p.name, to_string(p.type)));
             }
             if (!values.count(p.name))
                 m.params.fail(p, fmt::format("parameter \"{}\" of material \"{}\" needs one value", p.name, spec.name));
         }
+        ParamValues resolved;
         std::unique_ptr<BxDF> bxdf;
         try {
-            bxdf = make_bxdf(spec.name, values);
+            resolved = resolve_params(spec, values);
+            bxdf = spec.make(resolved); // with the textured parameters at their defaults
         } catch (const Error& e) {
             throw Error(m.loc, e.what());
         }
         // The albedo pass shows the directional albedo at normal incidence.
         AlbedoEstimate a = directional_albedo(*bxdf, {0, 0, 1}, spec.delta, 16, 4096, 1);
-        return own(std::make_unique<SharedBxDFMaterial>(std::move(bxdf),
-                                                        Color3(float(a.mc[0]), float(a.mc[1]), float(a.mc[2]))));
+        Color3 albedo(float(a.mc[0]), float(a.mc[1]), float(a.mc[2]));
+        if (textured.empty()) return own(std::make_unique<SharedBxDFMaterial>(std::move(bxdf), albedo));
+
+        // illum's own models (`illum brdf list`) with textured parameters: placed per hit.
+        if (!spec.factory.place)
+            throw Error(m.loc, fmt::format("material \"{}\" cannot have textured parameters", spec.name));
+        std::vector<ShadingArgs::Value> args;
+        for (const ParamSpec& ps : spec.params) {
+            ShadingArgs::Value v{ps.name, ps.kind, {}, {}, nullptr, nullptr, float(ps.min), float(ps.max)};
+            if (auto t = textured.find(ps.name); t != textured.end()) {
+                if (ps.kind == ParamKind::Rgb) v.color = color_param(m, ps.name, std::nullopt);
+                else if (ps.kind == ParamKind::Scalar) v.scalar = float_param(m, ps.name, std::nullopt);
+                else m.params.fail(*t->second, fmt::format("parameter \"{}\" of \"{}\" cannot be a texture", ps.name, spec.name));
+                textured.erase(t);
+            } else if (!resolved.has(ps.name)) {
+                continue; // an optional parameter not given
+            } else if (ps.kind == ParamKind::Rgb) {
+                v.constant = resolved.rgb(ps.name);
+            } else if (ps.kind == ParamKind::Scalar || ps.kind == ParamKind::Integer) {
+                v.constant = Color3(resolved.scalar(ps.name));
+            } else {
+                v.text = resolved.str(ps.name);
+            }
+            args.push_back(std::move(v));
+        }
+        if (!textured.empty())
+            m.params.fail(*textured.begin()->second,
+                          fmt::format("material \"{}\" has no parameter \"{}\"", spec.name, textured.begin()->first));
+        return own(std::make_unique<TexturedModelMaterial>(spec, std::move(args), albedo));
     }
 
     const Material* make_material(const EntityDesc& m, const std::string& type) {
