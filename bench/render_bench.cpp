@@ -18,13 +18,7 @@ const Scene& cornell_box(int resolution) {
     static int res = 0;
     if (!scene || res != resolution) {
         SceneDesc desc = builtin_cornell_box();
-        for (const char* name : {"xresolution", "yresolution"}) {
-            Param p;
-            p.type = ParamType::Integer;
-            p.name = name;
-            p.numbers = {double(resolution)};
-            desc.film.params.add(p);
-        }
+        desc.set_film_resolution(resolution, resolution);
         scene = build_scene(desc);
         res = resolution;
     }

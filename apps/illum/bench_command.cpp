@@ -27,16 +27,8 @@ struct BenchArgs {
 
 void run(const BenchArgs& args) {
     SceneDesc desc = load_scene_desc(args.scene);
-    int w = 0, h = 0;
-    if (std::sscanf(args.resolution.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0)
-        throw Error(fmt::format("--resolution \"{}\" is not WIDTHxHEIGHT", args.resolution));
-    for (auto [name, v] : {std::pair{"xresolution", w}, std::pair{"yresolution", h}}) {
-        Param p;
-        p.type = ParamType::Integer;
-        p.name = name;
-        p.numbers = {double(v)};
-        desc.film.params.add(p);
-    }
+    auto [w, h] = parse_resolution(args.resolution);
+    desc.set_film_resolution(w, h);
     auto scene = build_scene(desc);
     int threads = args.threads > 0 ? args.threads : int(std::max(1u, std::thread::hardware_concurrency()));
 

@@ -225,9 +225,7 @@ void add_brdf_command(CLI::App& app) {
     gallery->add_option("--threads", gal->threads, "worker threads (default: all)")->check(positive_integer());
     gallery->add_flag("-q,--quiet", gal->quiet, "no progress");
     gallery->callback([gal] {
-        int w = 0, h = 0;
-        if (std::sscanf(gal->resolution.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0)
-            throw Error("--resolution \"" + gal->resolution + "\" is not WIDTHxHEIGHT");
+        auto [w, h] = parse_resolution(gal->resolution);
         if (!is_supported_output_extension(gal->output))
             throw Error("cannot write \"" + gal->output + "\": unknown image extension \"" +
                         image_extension(gal->output) + "\" (use .exr, .pfm, .hdr or .png)");

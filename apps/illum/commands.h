@@ -4,6 +4,10 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdio>
+#include <utility>
+
+#include "illum/util/error.h"
 #include <string>
 
 namespace illum::cli {
@@ -22,6 +26,15 @@ inline CLI::Validator positive_integer() {
         },
         "N>0");
 }
+// "WIDTHxHEIGHT" for --resolution; throws illum::Error naming the option's value otherwise.
+inline std::pair<int, int> parse_resolution(const std::string& s) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w <= 0 || h <= 0)
+        throw Error("--resolution \"" + s + "\" is not WIDTHxHEIGHT");
+    return {w, h};
+}
+
 inline CLI::Validator positive_number() {
     return CLI::Validator(
         [](std::string& s) -> std::string {

@@ -58,19 +58,6 @@ void check_output(const std::string& path) {
     if (std::filesystem::is_directory(path, ec)) throw Error(fmt::format("cannot write \"{}\": it is a directory", path));
 }
 
-void apply_resolution(SceneDesc& desc, const std::string& res) {
-    int w = 0, h = 0;
-    char x = 0;
-    if (std::sscanf(res.c_str(), "%d%c%d", &w, &x, &h) != 3 || (x != 'x' && x != 'X') || w <= 0 || h <= 0)
-        throw Error(fmt::format("--resolution \"{}\" is not WIDTHxHEIGHT", res));
-    for (auto [name, v] : {std::pair{"xresolution", w}, std::pair{"yresolution", h}}) {
-        Param p;
-        p.type = ParamType::Integer;
-        p.name = name;
-        p.numbers = {double(v)};
-        desc.film.params.add(p);
-    }
-}
 
 void write_stats(const std::string& path, const RenderArgs& args, const Scene& scene, const RenderResult& r,
                  const std::string& integrator) {
@@ -105,7 +92,10 @@ void run(const RenderArgs& args) {
     if (!args.stats.empty()) check_output_folder_only(args.stats);
 
     SceneDesc desc = load_scene_desc(args.scene);
-    if (!args.resolution.empty()) apply_resolution(desc, args.resolution);
+    if (!args.resolution.empty()) {
+        auto [w, h] = parse_resolution(args.resolution);
+        desc.set_film_resolution(w, h);
+    }
     BuildOptions build_options;
     build_options.strict = args.strict;
     std::unique_ptr<Scene> scene = build_scene(desc, build_options);

@@ -22,13 +22,7 @@ constexpr double kSigmas = 4.5;
 Image render_cornell(int spp, std::uint64_t seed, int resolution = 0) {
     SceneDesc desc = builtin_cornell_box();
     if (resolution > 0) {
-        for (const char* name : {"xresolution", "yresolution"}) {
-            Param p;
-            p.type = ParamType::Integer;
-            p.name = name;
-            p.numbers = {double(resolution)};
-            desc.film.params.add(p);
-        }
+        desc.set_film_resolution(resolution, resolution);
     }
     auto scene = build_scene(desc);
     auto integrator = make_integrator("path", *scene, scene->request.max_depth);

@@ -47,13 +47,7 @@ void PrintTo(const SceneCase& c, std::ostream* os) { *os << c.name; }
 Image render_scene(const std::string& name, int spp, std::uint64_t seed, int resolution = 0) {
     SceneDesc desc = parse_pbrt_file(test::shared_dir() + "/scenes/" + name + "/test.pbrt");
     if (resolution > 0) {
-        for (const char* n : {"xresolution", "yresolution"}) {
-            Param p;
-            p.type = ParamType::Integer;
-            p.name = n;
-            p.numbers = {double(resolution)};
-            desc.film.params.add(p);
-        }
+        desc.set_film_resolution(resolution, resolution);
     }
     auto scene = build_scene(desc);
     auto integrator = make_integrator(scene->request.integrator, *scene, scene->request.max_depth);

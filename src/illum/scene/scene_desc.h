@@ -98,6 +98,17 @@ struct SceneDesc {
     std::map<std::string, MediumDesc> media; // MakeNamedMedium
 
     std::vector<std::string> warnings; // recognised but unsupported features, with positions
+
+    // Overrides the film's resolution (the command line's --resolution, tests rendering smaller).
+    void set_film_resolution(int width, int height) {
+        for (auto [name, v] : {std::pair{"xresolution", width}, std::pair{"yresolution", height}}) {
+            Param p;
+            p.type = ParamType::Integer;
+            p.name = name;
+            p.numbers = {double(v)};
+            film.params.add(p);
+        }
+    }
 };
 
 } // namespace illum
