@@ -4,7 +4,9 @@
 #include <fmt/format.h>
 #include <limits>
 
+#include "illum/math/rng.h"
 #include "illum/util/error.h"
+#include <cstring>
 
 namespace illum {
 
@@ -98,8 +100,43 @@ std::uint32_t Accelerator::attach(RTCGeometry geom, Record record) {
     return id;
 }
 
+// The alpha test at a candidate hit (both closest-hit and shadow rays): evaluate the alpha texture at the
+// hit's uv and reject the hit unless a uniform number from a hash of the ray is below alpha.
+void Accelerator::alpha_filter(const RTCFilterFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    const auto* cut = static_cast<const AlphaCutout*>(args->geometryUserPtr);
+    const auto* h = reinterpret_cast<const RTCHit*>(args->hit);
+    const auto* r = reinterpret_cast<const RTCRay*>(args->ray);
+    const TriangleMesh& m = *cut->mesh;
+    std::uint32_t tri = h->primID;
+    float b1 = h->u, b2 = h->v, b0 = 1 - b1 - b2;
+    SurfaceHit sh;
+    auto v = m.vertices(tri);
+    sh.p = barycentric(v[0], v[1], v[2], b0, b1, b2);
+    if (!m.uv.empty()) {
+        Point2f t0 = m.uv[m.indices[3 * tri]], t1 = m.uv[m.indices[3 * tri + 1]], t2 = m.uv[m.indices[3 * tri + 2]];
+        sh.uv = {b0 * t0.x + b1 * t1.x + b2 * t2.x, b0 * t0.y + b1 * t1.y + b2 * t2.y};
+    } else {
+        sh.uv = {b1 + b2, b2}; // the default (0,0), (1,0), (1,1) parameterisation
+    }
+    float a = cut->alpha->evaluate(sh);
+    if (a >= 1) return;
+    if (a <= 0) {
+        args->valid[0] = 0;
+        return;
+    }
+    auto bits = [](float f) {
+        std::uint32_t u;
+        std::memcpy(&u, &f, sizeof u);
+        return u;
+    };
+    std::uint64_t key = hash(bits(r->org_x), bits(r->org_y), bits(r->org_z), bits(r->dir_x), bits(r->dir_y),
+                             bits(r->dir_z), tri);
+    if (float(key >> 40) * 0x1p-24f > a) args->valid[0] = 0;
+}
+
 std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
-                                    std::vector<const Light*> lights) {
+                                    std::vector<const Light*> lights, const FloatTexture* alpha) {
     if (mesh->face_normals.size() != mesh->triangle_count()) mesh->finalize();
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -113,7 +150,14 @@ std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Ma
     auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                                3 * sizeof(unsigned), mesh->triangle_count()));
     std::copy(mesh->indices.begin(), mesh->indices.end(), idx);
-    Record r{Kind::Mesh, std::move(mesh), nullptr, nullptr, material, std::move(lights)};
+    std::unique_ptr<AlphaCutout> cutout;
+    if (alpha) {
+        cutout = std::make_unique<AlphaCutout>(AlphaCutout{mesh.get(), alpha});
+        rtcSetGeometryUserData(geom, cutout.get());
+        rtcSetGeometryIntersectFilterFunction(geom, alpha_filter);
+        rtcSetGeometryOccludedFilterFunction(geom, alpha_filter);
+    }
+    Record r{Kind::Mesh, std::move(mesh), nullptr, nullptr, material, std::move(lights), std::move(cutout)};
     return attach(geom, std::move(r));
 }
 

@@ -14,6 +14,7 @@
 #include "illum/geometry/sphere.h"
 #include "illum/geometry/surface_hit.h"
 #include "illum/geometry/triangle_mesh.h"
+#include "illum/texture/texture.h"
 
 namespace illum {
 
@@ -26,8 +27,10 @@ public:
 
     // Each add returns the geometry id. `lights` has one entry per primitive (null where it does not
     // emit) or is empty when no primitive emits.
+    // alpha (optional): a cut-out; where it is below 1 a hit is kept with probability alpha (pbrt-v4's
+    // stochastic alpha test, deterministic per ray), so alpha 0 is a hole.
     std::uint32_t add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
-                           std::vector<const Light*> lights);
+                           std::vector<const Light*> lights, const FloatTexture* alpha = nullptr);
     std::uint32_t add_sphere(std::unique_ptr<SphereShape> sphere, const Material* material, const Light* light);
     std::uint32_t add_disk(std::unique_ptr<DiskShape> disk, const Material* material, const Light* light);
     void commit();
@@ -49,6 +52,10 @@ public:
 
 private:
     enum class Kind : std::uint8_t { Mesh, Sphere, Disk };
+    struct AlphaCutout {
+        const TriangleMesh* mesh;
+        const FloatTexture* alpha;
+    };
     struct Record {
         Kind kind;
         std::unique_ptr<TriangleMesh> mesh;
@@ -56,7 +63,9 @@ private:
         std::unique_ptr<DiskShape> disk;
         const Material* material = nullptr;
         std::vector<const Light*> lights;
+        std::unique_ptr<AlphaCutout> cutout; // owned here; Embree holds a pointer to it
     };
+    static void alpha_filter(const RTCFilterFunctionNArguments* args);
     std::uint32_t attach(RTCGeometry geom, Record record);
 
     RTCDevice device_ = nullptr;

@@ -706,21 +706,27 @@ private:
                 tri_lights.push_back(scene_->lights.back().get());
             }
         }
-        scene_->accelerator.add_mesh(std::move(mesh), resolve(s.material, s.loc), std::move(tri_lights));
+        scene_->accelerator.add_mesh(std::move(mesh), resolve(s.material, s.loc), std::move(tri_lights), alpha_of(s));
+    }
+
+    // pbrt-v4's "alpha" of a shape, a float or a float texture; nullptr when the shape is opaque.
+    const FloatTexture* alpha_of(const ShapeDesc& s) {
+        const Param* a = s.params.find("alpha");
+        if (!a) return nullptr;
+        if (a->type == ParamType::Float && s.params.get_float("alpha", 1) >= 1) return nullptr;
+        return float_param(s, "alpha", 1.0f);
     }
 
     void build_shape(const ShapeDesc& s) {
         if (!s.world_from_object.matrix().is_finite()) throw Error(s.loc, "shape transform is not finite");
         if (const Param* a = s.params.find("alpha")) {
-            // A constant alpha of 0 removes the shape (pbrt-v4 does the same); other cut-outs are not
-            // supported yet: the shape is rendered opaque.
-            if (a->type == ParamType::Float) {
-                if (s.params.get_float("alpha", 1) <= 0) return;
-                if (s.params.get_float("alpha", 1) < 1)
-                    unsupported(a->loc, "partial \"alpha\" is rendered opaque");
-            } else {
+            // A constant alpha of 0 removes the shape (pbrt-v4 does the same). Meshes take any other alpha
+            // as a cut-out (add_mesh); the analytic shapes do not yet.
+            if (a->type == ParamType::Float && s.params.get_float("alpha", 1) <= 0) return;
+            bool mesh = s.type == "trianglemesh" || s.type == "plymesh" || s.type == "bilinearmesh";
+            if (!mesh && !(a->type == ParamType::Float && s.params.get_float("alpha", 1) >= 1)) {
                 a->used = true;
-                unsupported(a->loc, "alpha textures (cut-outs) are not supported yet; the shape is opaque");
+                unsupported(a->loc, fmt::format("\"alpha\" on a {} is not supported; it is opaque", s.type));
             }
         }
         if (s.type == "trianglemesh") {
