@@ -96,6 +96,24 @@ Material "oren-nayar" "texture reflectance" "f")";
     EXPECT_TRUE(a == b);
 }
 
+// Where textures break a model's energy constraint (Ward: rho_d + rho_s <= 1), the pair is scaled down to
+// sum to 1 at that point, rather than the constructor failing there: rho_d 0.9 with rho_s 0.5 renders as
+// rho_d 0.9/1.4, rho_s 0.5/1.4.
+TEST(ModelMaterials, TexturesThatBreakEnergyConservationAreScaledDown) {
+    test::RenderSetup s;
+    s.spp = 4;
+    Image a = test::render_pbrt(sphere_scene(R"(Texture "d" "spectrum" "constant" "rgb value" [0.9 0.9 0.9]
+Material "ward" "texture rho_d" "d" "rgb rho_s" [0.5 0.5 0.5])"),
+                                s)
+                  .image;
+    Image b = test::render_pbrt(
+                  sphere_scene(R"(Material "ward" "rgb rho_d" [0.642857 0.642857 0.642857] "rgb rho_s" [0.357143 0.357143 0.357143])"),
+                  s)
+                  .image;
+    for (std::size_t i = 0; i < a.pixel_count(); ++i)
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(a.data()[i][c], b.data()[i][c], 1e-4f + 1e-4f * b.data()[i][c]);
+}
+
 TEST(ModelMaterials, ParametersAreCheckedWithTheirPosition) {
     try {
         test::render_pbrt(sphere_scene("\n\nMaterial \"ward\" \"float alpha_x\" [-1]"));

@@ -475,6 +475,16 @@ std::vector<ModelSpec> build_models() {
              return m.template make<ToonBxDF>(p.rgb("reflectance"), p.rgb("ks"), p.integer("bands"),
                                                p.scalar("highlight"));
          })});
+    // Energy conservation ties these parameters together (each model's constructor checks it).
+    for (ModelSpec& spec : m) {
+        if (spec.name == "phong" || spec.name == "blinn-phong" || spec.name == "torrance-sparrow" ||
+            spec.name == "cook-torrance")
+            spec.unit_sums = {{"kd", "ks"}};
+        else if (spec.name == "ward")
+            spec.unit_sums = {{"rho_d", "rho_s"}};
+        else if (spec.name == "diffuse-transmission")
+            spec.unit_sums = {{"reflectance", "transmittance"}};
+    }
     return m;
 }
 
@@ -588,10 +598,21 @@ float ShadingArgs::scalar(const std::string& name) const {
     return std::clamp(std::isfinite(x) ? x : v.lo, v.lo, v.hi);
 }
 
-Color3 ShadingArgs::rgb(const std::string& name) const {
-    const Value& v = get(name);
+Color3 ShadingArgs::raw_rgb(const Value& v) const {
     Color3 c = v.color ? v.color->evaluate(hit_) : v.constant;
     for (int i = 0; i < 3; ++i) c[i] = std::clamp(std::isfinite(c[i]) ? c[i] : v.lo, v.lo, v.hi);
+    return c;
+}
+
+Color3 ShadingArgs::rgb(const std::string& name) const {
+    const Value& v = get(name);
+    Color3 c = raw_rgb(v);
+    if (v.unit_sum_group < 0) return c;
+    Color3 sum;
+    for (const Value& w : values_)
+        if (w.unit_sum_group == v.unit_sum_group) sum += raw_rgb(w);
+    for (int i = 0; i < 3; ++i)
+        if (sum[i] > 1) c[i] /= sum[i];
     return c;
 }
 

@@ -56,6 +56,7 @@ public:
         const ColorTexture* color = nullptr;   // a textured Rgb parameter
         const FloatTexture* scalar = nullptr;  // a textured Scalar parameter
         float lo = 0, hi = 0;
+        int unit_sum_group = -1; // index into ModelSpec::unit_sums, -1 for none
     };
     ShadingArgs(const std::vector<Value>& values, const SurfaceHit& hit) : values_(values), hit_(hit) {}
 
@@ -67,6 +68,7 @@ public:
 
 private:
     const Value& get(const std::string& name) const;
+    Color3 raw_rgb(const Value& v) const; // evaluated and clamped to the parameter's range
     const Value* find(const std::string& name) const {
         for (const Value& v : values_)
             if (v.name == name) return &v;
@@ -99,6 +101,9 @@ struct ModelSpec {
     bool stochastic = false;   // f() is a stochastic estimate and pdf() approximate
     std::string eta_param;     // interior index for generalised reciprocity of transmission
     ModelFactory factory;
+    // Groups of Rgb parameters whose sum the model requires to be at most 1 (kd + ks, say). Where textures
+    // break that at a shading point, the group is scaled down per channel to sum to 1.
+    std::vector<std::vector<std::string>> unit_sums = {};
 
     std::unique_ptr<BxDF> make(const ParamValues& values) const { return factory.make(values); }
 };

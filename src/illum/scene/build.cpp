@@ -547,7 +547,10 @@ private:
             throw Error(m.loc, fmt::format("material \"{}\" cannot have textured parameters", spec.name));
         std::vector<ShadingArgs::Value> args;
         for (const ParamSpec& ps : spec.params) {
-            ShadingArgs::Value v{ps.name, ps.kind, {}, {}, nullptr, nullptr, float(ps.min), float(ps.max)};
+            ShadingArgs::Value v{ps.name, ps.kind, {}, {}, nullptr, nullptr, float(ps.min), float(ps.max), -1};
+            for (std::size_t g = 0; g < spec.unit_sums.size(); ++g)
+                for (const std::string& name : spec.unit_sums[g])
+                    if (name == ps.name) v.unit_sum_group = int(g);
             if (auto t = textured.find(ps.name); t != textured.end()) {
                 if (ps.kind == ParamKind::Rgb) v.color = color_param(m, ps.name, std::nullopt);
                 else if (ps.kind == ParamKind::Scalar) v.scalar = float_param(m, ps.name, std::nullopt);
