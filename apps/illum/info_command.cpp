@@ -62,7 +62,8 @@ void run(const InfoArgs& args) {
     if (!desc.instances.empty())
         fmt::print("instances   {} definitions with {} shapes, {} uses\n", desc.instances.size(), instanced,
                    desc.instance_uses.size());
-    fmt::print("triangles   {}\n", scene->accelerator.triangle_count());
+    fmt::print("triangles   {} (stored once per instanced object)\n", scene->accelerator.triangle_count());
+    if (std::size_t n = scene->accelerator.instance_count()) fmt::print("instances   {}\n", n);
     fmt::print("geometries  {}\n", scene->accelerator.geometry_count());
     fmt::print("materials   {} ({})\n", desc.materials.size(), counts(materials));
     fmt::print("textures    {} ({})\n", desc.textures.size(), counts(textures));

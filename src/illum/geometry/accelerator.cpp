@@ -87,17 +87,58 @@ Accelerator::Accelerator() {
 }
 
 Accelerator::~Accelerator() {
+    for (auto& p : prototypes_)
+        if (p->scene) rtcReleaseScene(p->scene);
     if (scene_) rtcReleaseScene(scene_);
     if (device_) rtcReleaseDevice(device_);
 }
 
 std::uint32_t Accelerator::attach(RTCGeometry geom, Record record) {
     rtcCommitGeometry(geom);
-    std::uint32_t id = rtcAttachGeometry(scene_, geom);
+    RTCScene scene = building_ ? building_->scene : scene_;
+    std::vector<Record>& records = building_ ? building_->records : records_;
+    std::uint32_t id = rtcAttachGeometry(scene, geom);
     rtcReleaseGeometry(geom);
-    if (id != records_.size()) throw Error("Embree returned an unexpected geometry id");
-    records_.push_back(std::move(record));
+    if (id != records.size()) throw Error("Embree returned an unexpected geometry id");
+    records.push_back(std::move(record));
     return id;
+}
+
+std::uint32_t Accelerator::begin_prototype() {
+    if (building_) throw Error("nested object instance definitions");
+    prototypes_.push_back(std::make_unique<Prototype>());
+    building_ = prototypes_.back().get();
+    building_->scene = rtcNewScene(device_);
+    rtcSetSceneBuildQuality(building_->scene, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneFlags(building_->scene, RTC_SCENE_FLAG_ROBUST);
+    return std::uint32_t(prototypes_.size() - 1);
+}
+
+void Accelerator::end_prototype() {
+    if (!building_) return;
+    rtcCommitScene(building_->scene);
+    building_ = nullptr;
+}
+
+void Accelerator::add_instance(std::uint32_t prototype, const Transform& world_from_instance) {
+    const Prototype& proto = *prototypes_.at(prototype);
+    if (proto.records.empty()) return; // nothing to place
+    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geom, proto.scene);
+    rtcSetGeometryTimeStepCount(geom, 1);
+    float xfm[12];
+    const Matrix4& m = world_from_instance.matrix();
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) xfm[4 * r + c] = float(m(r, c));
+    rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, xfm);
+    for (float x : {proto.bounds.lo.x, proto.bounds.hi.x})
+        for (float y : {proto.bounds.lo.y, proto.bounds.hi.y})
+            for (float z : {proto.bounds.lo.z, proto.bounds.hi.z}) bounds_.extend(world_from_instance(Point3f{x, y, z}));
+    Record r{Kind::Instance, nullptr, nullptr, nullptr, nullptr, {}, nullptr, prototype, world_from_instance};
+    Prototype* saved = building_;
+    building_ = nullptr; // instances live in the world scene
+    attach(geom, std::move(r));
+    building_ = saved;
 }
 
 // The alpha test at a candidate hit (both closest-hit and shadow rays): evaluate the alpha texture at the
@@ -145,7 +186,7 @@ std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Ma
         v[3 * i] = mesh->p[i].x;
         v[3 * i + 1] = mesh->p[i].y;
         v[3 * i + 2] = mesh->p[i].z;
-        bounds_.extend(mesh->p[i]);
+        (building_ ? building_->bounds : bounds_).extend(mesh->p[i]);
     }
     auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                                3 * sizeof(unsigned), mesh->triangle_count()));
@@ -170,7 +211,7 @@ std::uint32_t Accelerator::add_sphere(std::unique_ptr<SphereShape> sphere, const
     v[1] = sphere->center().y;
     v[2] = sphere->center().z;
     v[3] = sphere->radius();
-    bounds_.extend(sphere->bounds());
+    (building_ ? building_->bounds : bounds_).extend(sphere->bounds());
     std::vector<const Light*> lights;
     if (light) lights.push_back(light);
     Record r{Kind::Sphere, nullptr, std::move(sphere), nullptr, material, std::move(lights)};
@@ -184,7 +225,7 @@ std::uint32_t Accelerator::add_disk(std::unique_ptr<DiskShape> disk, const Mater
     rtcSetGeometryBoundsFunction(geom, disk_bounds, nullptr);
     rtcSetGeometryIntersectFunction(geom, disk_intersect);
     rtcSetGeometryOccludedFunction(geom, disk_occluded);
-    bounds_.extend(disk->bounds());
+    (building_ ? building_->bounds : bounds_).extend(disk->bounds());
     std::vector<const Light*> lights;
     if (light) lights.push_back(light);
     Record r{Kind::Disk, nullptr, nullptr, std::move(disk), material, std::move(lights)};
@@ -204,18 +245,47 @@ bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
     rtcIntersect1(scene_, &ctx, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
 
-    const Record& rec = records_[rh.hit.geomID];
+    if (rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID) {
+        fill_hit(records_[rh.hit.geomID], rh, ray, hit);
+        return true;
+    }
+    // A hit inside an instance: fill it in instance space, then carry it to the world.
+    const Record& inst = records_[rh.hit.instID[0]];
+    const Transform& w = inst.world_from_instance;
+    Transform instance_from_world = w.inverse();
+    Ray local{instance_from_world(ray.o), instance_from_world(ray.d), ray.tmax};
+    fill_hit(prototypes_[inst.prototype]->records[rh.hit.geomID], rh, local, hit);
+    // The point's error bound through the affine map (after PBR 4th ed. §6.8.6): each coordinate gets
+    // |M| (γ3 |p| + (1 + γ3) err) + γ3 |translation|.
+    const Matrix4& m = w.matrix();
+    Vector3f err;
+    for (int r = 0; r < 3; ++r) {
+        double e = gamma_bound(3) * std::abs(m(r, 3));
+        for (int c = 0; c < 3; ++c)
+            e += std::abs(m(r, c)) * (gamma_bound(3) * std::abs(hit->p[c]) + (1 + gamma_bound(3)) * hit->p_error[c]);
+        err[r] = float(e);
+    }
+    hit->p = w(hit->p);
+    hit->p_error = err;
+    hit->n = normalize(w(hit->n));
+    hit->ns = normalize(w(hit->ns));
+    hit->dpdu = w(hit->dpdu);
+    hit->wo = normalize(-ray.d);
+    return true;
+}
+
+void Accelerator::fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit) {
     float t = rh.ray.tfar;
     switch (rec.kind) {
     case Kind::Mesh: rec.mesh->fill_hit(rh.hit.primID, rh.hit.u, rh.hit.v, t, ray, hit); break;
     case Kind::Sphere: rec.sphere->fill_hit(t, ray, hit); break;
     case Kind::Disk: rec.disk->fill_hit(t, ray, hit); break;
+    case Kind::Instance: break; // never hit itself: Embree reports the instanced geometry
     }
     hit->geom_id = rh.hit.geomID;
     hit->prim_id = rh.hit.primID;
     hit->material = rec.material;
     hit->area_light = rec.lights.empty() ? nullptr : rec.lights[rec.kind == Kind::Mesh ? rh.hit.primID : 0];
-    return true;
 }
 
 float Accelerator::intersect_distance(const Ray& ray) const {
@@ -245,6 +315,15 @@ std::size_t Accelerator::triangle_count() const {
     std::size_t n = 0;
     for (auto& r : records_)
         if (r.mesh) n += r.mesh->triangle_count();
+    for (auto& p : prototypes_)
+        for (auto& r : p->records)
+            if (r.mesh) n += r.mesh->triangle_count();
+    return n;
+}
+
+std::size_t Accelerator::instance_count() const {
+    std::size_t n = 0;
+    for (auto& r : records_) n += r.kind == Kind::Instance;
     return n;
 }
 

@@ -33,6 +33,12 @@ public:
                            std::vector<const Light*> lights, const FloatTexture* alpha = nullptr);
     std::uint32_t add_sphere(std::unique_ptr<SphereShape> sphere, const Material* material, const Light* light);
     std::uint32_t add_disk(std::unique_ptr<DiskShape> disk, const Material* material, const Light* light);
+    // Object instancing (pbrt's ObjectBegin/ObjectInstance): between begin_prototype() and end_prototype()
+    // the add_* calls build a prototype (an Embree scene of its own, in instance space); add_instance()
+    // places it in the world any number of times at the cost of one Embree instance each.
+    std::uint32_t begin_prototype();
+    void end_prototype();
+    void add_instance(std::uint32_t prototype, const Transform& world_from_instance);
     void commit();
 
     // Closest hit along the ray within (0, ray.tmax).
@@ -47,11 +53,13 @@ public:
     const TriangleMesh* mesh(std::uint32_t geom_id) const;
     const SphereShape* sphere(std::uint32_t geom_id) const;
     const DiskShape* disk(std::uint32_t geom_id) const;
+    // Triangles stored (each prototype's once, however often it is instanced) and instances placed.
     std::size_t triangle_count() const;
+    std::size_t instance_count() const;
     std::size_t geometry_count() const { return records_.size(); }
 
 private:
-    enum class Kind : std::uint8_t { Mesh, Sphere, Disk };
+    enum class Kind : std::uint8_t { Mesh, Sphere, Disk, Instance };
     struct AlphaCutout {
         const TriangleMesh* mesh;
         const FloatTexture* alpha;
@@ -64,13 +72,24 @@ private:
         const Material* material = nullptr;
         std::vector<const Light*> lights;
         std::unique_ptr<AlphaCutout> cutout; // owned here; Embree holds a pointer to it
+        std::uint32_t prototype = 0;         // Kind::Instance
+        Transform world_from_instance;       // Kind::Instance
     };
+    struct Prototype {
+        RTCScene scene = nullptr;
+        std::vector<Record> records;
+        Bounds3f bounds;
+    };
+    // Fills the hit of an Embree hit on the geometry of `rec` along `ray` (in that geometry's space).
+    static void fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit);
     static void alpha_filter(const RTCFilterFunctionNArguments* args);
     std::uint32_t attach(RTCGeometry geom, Record record);
 
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
     std::vector<Record> records_;
+    std::vector<std::unique_ptr<Prototype>> prototypes_;
+    Prototype* building_ = nullptr; // the prototype under construction, if any
     Bounds3f bounds_;
 };
 

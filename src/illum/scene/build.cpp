@@ -892,22 +892,31 @@ private:
     // ObjectInstance: flattened, each use copies the definition's shapes under world_from_instance (no
     // Embree instancing yet: memory grows with the number of uses). Area lights in instances are
     // ignored, as pbrt-v4 does.
+    // pbrt's ObjectBegin/ObjectInstance: each definition is built once, in its own space, as an Embree
+    // prototype; each use is an Embree instance of it (memory does not grow with the number of uses).
     void build_instances() {
+        std::map<std::string, std::uint32_t> prototypes;
         for (const InstanceUse& use : desc_.instance_uses) {
             auto it = desc_.instances.find(use.name);
             if (it == desc_.instances.end())
                 throw Error(use.loc, fmt::format("undefined object \"{}\" in ObjectInstance", use.name));
             if (!use.world_from_instance.matrix().is_finite())
                 throw Error(use.loc, "instance transform is not finite");
-            for (const ShapeDesc& shape : it->second.shapes) {
-                ShapeDesc copy = shape;
-                copy.world_from_object = use.world_from_instance * shape.world_from_object;
-                if (copy.area_light >= 0) {
-                    unsupported(shape.loc, "area lights in object instances are ignored (as in pbrt-v4)");
-                    copy.area_light = -1;
+            auto p = prototypes.find(use.name);
+            if (p == prototypes.end()) {
+                std::uint32_t id = scene_->accelerator.begin_prototype();
+                for (const ShapeDesc& shape : it->second.shapes) {
+                    ShapeDesc copy = shape;
+                    if (copy.area_light >= 0) {
+                        unsupported(shape.loc, "area lights in object instances are ignored (as in pbrt-v4)");
+                        copy.area_light = -1;
+                    }
+                    build_shape(copy);
                 }
-                build_shape(copy);
+                scene_->accelerator.end_prototype();
+                p = prototypes.emplace(use.name, id).first;
             }
+            scene_->accelerator.add_instance(p->second, use.world_from_instance);
         }
     }
 
