@@ -41,7 +41,11 @@ void BM_EmbreeIncoherentClosestHit(benchmark::State& state) {
     state.counters["rays/s"] = benchmark::Counter(double(rays) / seconds);
     state.counters["threads"] = nthreads;
 }
-BENCHMARK(BM_EmbreeIncoherentClosestHit)->Arg(1)->Arg(threads())->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EmbreeIncoherentClosestHit)
+    ->Arg(1)
+    ->Arg(threads())
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 void BM_PathTracerCornellBox(benchmark::State& state) {
     const Scene& scene = cornell_box(256);

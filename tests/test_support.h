@@ -14,7 +14,9 @@
 namespace illum::test {
 
 inline std::string shared_dir() { return ILLUM_SHARED_DIR; }
-inline bool have_shared() { return std::filesystem::is_directory(std::filesystem::path(shared_dir()) / "scenes"); }
+inline bool have_shared() {
+    return std::filesystem::is_directory(std::filesystem::path(shared_dir()) / "scenes");
+}
 
 struct RenderSetup {
     std::string integrator = "path";
@@ -28,8 +30,8 @@ struct RenderSetup {
 inline RenderResult render_pbrt(const std::string& text, const RenderSetup& setup = {}) {
     SceneDesc desc = parse_pbrt_string(text, "<test>", ".");
     auto scene = build_scene(desc);
-    auto integrator =
-        make_integrator(setup.integrator, *scene, setup.max_depth == -2 ? scene->request.max_depth : setup.max_depth);
+    auto integrator = make_integrator(setup.integrator, *scene,
+                                      setup.max_depth == -2 ? scene->request.max_depth : setup.max_depth);
     RenderOptions opt;
     opt.spp = setup.spp;
     opt.threads = setup.threads;

@@ -59,12 +59,13 @@ void run(const BenchArgs& args) {
         fmt::print("{}\n", j.dump(2));
         return;
     }
-    fmt::print("scene: {} ({}x{}, {} spp, {} threads)\n", args.scene.empty() ? "built-in Cornell box" : args.scene, w,
-               h, args.spp, threads);
+    fmt::print("scene: {} ({}x{}, {} spp, {} threads)\n",
+               args.scene.empty() ? "built-in Cornell box" : args.scene, w, h, args.spp, threads);
     fmt::print("  Embree closest hit, incoherent rays : {:10.2f} Mrays/s ({} rays in {:.3f} s)\n",
                raw.rays_per_second() / 1e6, raw.rays, raw.seconds);
-    fmt::print("  path tracer                          : {:10.2f} Mrays/s, {:.2f} Msamples/s ({:.2f} rays/sample)\n",
-               path_rays / 1e6, samples / 1e6, double(r.rays) / r.samples);
+    fmt::print(
+        "  path tracer                          : {:10.2f} Mrays/s, {:.2f} Msamples/s ({:.2f} rays/sample)\n",
+        path_rays / 1e6, samples / 1e6, double(r.rays) / r.samples);
     fmt::print("  path tracer / raw Embree             : {:10.1f} %\n", 100 * ratio);
 }
 
@@ -72,10 +73,13 @@ void run(const BenchArgs& args) {
 
 void add_bench_command(CLI::App& app) {
     auto args = std::make_shared<BenchArgs>();
-    CLI::App* cmd = app.add_subcommand("bench", "Measure ray and sample throughput (default: the built-in Cornell box)");
+    CLI::App* cmd =
+        app.add_subcommand("bench", "Measure ray and sample throughput (default: the built-in Cornell box)");
     cmd->add_option("scene", args->scene, "Scene file (.pbrt); omit for the built-in Cornell box");
-    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(positive_integer());
-    cmd->add_option("--spp", args->spp, "Samples per pixel of the path-traced render")->check(positive_integer());
+    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+        ->check(positive_integer());
+    cmd->add_option("--spp", args->spp, "Samples per pixel of the path-traced render")
+        ->check(positive_integer());
     cmd->add_option("--resolution", args->resolution, "Film resolution WIDTHxHEIGHT");
     cmd->add_option("--rays", args->rays, "Number of incoherent rays for the raw Embree rate")
         ->check(positive_integer());

@@ -10,14 +10,14 @@
 #include <fmt/core.h>
 
 #include "commands.h"
-#include "illum/analysis/gallery.h"
-#include "illum/image/image_io.h"
-#include "illum/render/renderer.h"
 #include "illum/analysis/albedo.h"
 #include "illum/analysis/audit.h"
+#include "illum/analysis/gallery.h"
 #include "illum/bsdf/conductor.h"
 #include "illum/bsdf/fresnel.h"
 #include "illum/bsdf/registry.h"
+#include "illum/image/image_io.h"
+#include "illum/render/renderer.h"
 #include "illum/util/error.h"
 
 namespace illum::cli {
@@ -218,11 +218,13 @@ void add_brdf_command(CLI::App& app) {
         bool quiet = false;
     };
     auto gal = std::make_shared<GalleryOptions>();
-    CLI::App* gallery = brdf->add_subcommand("gallery", "render one sphere per model (default parameters) in a grid");
+    CLI::App* gallery =
+        brdf->add_subcommand("gallery", "render one sphere per model (default parameters) in a grid");
     gallery->add_option("-o,--output", gal->output, "output image (.png tone mapped; .exr/.pfm/.hdr linear)");
     gallery->add_option("--spp", gal->spp, "samples per pixel")->check(positive_integer());
     gallery->add_option("--resolution", gal->resolution, "WIDTHxHEIGHT");
-    gallery->add_option("--threads", gal->threads, "worker threads (default: all)")->check(positive_integer());
+    gallery->add_option("--threads", gal->threads, "worker threads (default: all)")
+        ->check(positive_integer());
     gallery->add_flag("-q,--quiet", gal->quiet, "no progress");
     gallery->callback([gal] {
         auto [w, h] = parse_resolution(gal->resolution);

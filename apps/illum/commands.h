@@ -30,7 +30,8 @@ inline CLI::Validator positive_integer() {
 inline std::pair<int, int> parse_resolution(const std::string& s) {
     int w = 0, h = 0;
     char x = 0, extra = 0;
-    if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w <= 0 || h <= 0)
+    if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w <= 0 ||
+        h <= 0)
         throw Error("--resolution \"" + s + "\" is not WIDTHxHEIGHT");
     return {w, h};
 }

@@ -2,9 +2,9 @@
 // box when no scene is named.
 #include <cstdio>
 #include <filesystem>
+#include <fmt/core.h>
 #include <fstream>
 #include <memory>
-#include <fmt/core.h>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
@@ -43,21 +43,23 @@ void check_output_folder_only(const std::string& path) {
     if (dir.empty()) dir = ".";
     std::error_code ec;
     if (!std::filesystem::is_directory(dir, ec) || access(dir.c_str(), W_OK) != 0)
-        throw Error(fmt::format("cannot write \"{}\": folder \"{}\" is missing or not writable", path, dir.string()));
+        throw Error(
+            fmt::format("cannot write \"{}\": folder \"{}\" is missing or not writable", path, dir.string()));
 }
 
 // Fails early, before any rendering, if an output cannot be created: the folder must exist and be
 // writable. The image itself is written through a temporary file and a rename.
 void check_output(const std::string& path) {
     if (!is_supported_output_extension(path)) {
-        throw Error(fmt::format("cannot write \"{}\": unknown image extension \"{}\" (use .exr, .pfm, .hdr or .png)",
-                                path, image_extension(path)));
+        throw Error(
+            fmt::format("cannot write \"{}\": unknown image extension \"{}\" (use .exr, .pfm, .hdr or .png)",
+                        path, image_extension(path)));
     }
     check_output_folder_only(path);
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw Error(fmt::format("cannot write \"{}\": it is a directory", path));
+    if (std::filesystem::is_directory(path, ec))
+        throw Error(fmt::format("cannot write \"{}\": it is a directory", path));
 }
-
 
 void write_stats(const std::string& path, const RenderArgs& args, const Scene& scene, const RenderResult& r,
                  const std::string& integrator) {
@@ -87,7 +89,8 @@ void write_stats(const std::string& path, const RenderArgs& args, const Scene& s
 
 void run(const RenderArgs& args) {
     auto tonemap = tonemap_from_string(args.tonemap);
-    if (!tonemap) throw Error(fmt::format("unknown tone map \"{}\" (use clamp, reinhard or aces)", args.tonemap));
+    if (!tonemap)
+        throw Error(fmt::format("unknown tone map \"{}\" (use clamp, reinhard or aces)", args.tonemap));
     for (const auto& o : args.outputs) check_output(o);
     if (!args.stats.empty()) check_output_folder_only(args.stats);
 
@@ -104,7 +107,8 @@ void run(const RenderArgs& args) {
     std::vector<std::string> outputs = args.outputs;
     if (outputs.empty()) {
         std::string name = scene->request.output.empty() ? "illum.exr" : scene->request.output;
-        if (!is_supported_output_extension(name)) name = std::filesystem::path(name).replace_extension(".exr").string();
+        if (!is_supported_output_extension(name))
+            name = std::filesystem::path(name).replace_extension(".exr").string();
         // The film's filename is relative to where illum runs, as in pbrt.
         check_output(name);
         outputs.push_back(name);
@@ -135,8 +139,8 @@ void run(const RenderArgs& args) {
     }
     if (!args.stats.empty()) write_stats(args.stats, args, *scene, result, integrator_name);
     if (!args.quiet)
-        fmt::print(stderr, "{}x{}, {} spp in {:.2f} s: {:.3g} samples/s, {:.3g} rays/s on {} threads\n", scene->width,
-                   scene->height, result.spp, result.seconds, result.samples / result.seconds,
+        fmt::print(stderr, "{}x{}, {} spp in {:.2f} s: {:.3g} samples/s, {:.3g} rays/s on {} threads\n",
+                   scene->width, scene->height, result.spp, result.seconds, result.samples / result.seconds,
                    result.rays / result.seconds, result.threads);
 }
 
@@ -144,16 +148,22 @@ void run(const RenderArgs& args) {
 
 void add_render_command(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
-    CLI::App* cmd = app.add_subcommand("render", "Render a pbrt-v4 scene (default: the built-in Cornell box)");
+    CLI::App* cmd =
+        app.add_subcommand("render", "Render a pbrt-v4 scene (default: the built-in Cornell box)");
     cmd->add_option("scene", args->scene, "Scene file (.pbrt); omit for the built-in Cornell box");
-    cmd->add_option("-o,--output", args->outputs, "Output image(s): .exr, .pfm, .hdr (linear) or .png (tone mapped)");
-    cmd->add_option("--spp", args->spp, "Samples per pixel (default: the scene's)")->check(positive_integer());
+    cmd->add_option("-o,--output", args->outputs,
+                    "Output image(s): .exr, .pfm, .hdr (linear) or .png (tone mapped)");
+    cmd->add_option("--spp", args->spp, "Samples per pixel (default: the scene's)")
+        ->check(positive_integer());
     cmd->add_option("--time", args->time, "Render whole passes until this many seconds are spent")
         ->check(positive_number());
-    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(positive_integer());
+    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+        ->check(positive_integer());
     cmd->add_option("--seed", args->seed, "Seed of the sample sequences");
-    cmd->add_option("--integrator", args->integrator, "path, direct, albedo or normal (default: the scene's)");
-    cmd->add_option("--max-depth", args->max_depth, "Maximum number of scattering events (default: the scene's)")
+    cmd->add_option("--integrator", args->integrator,
+                    "path, direct, albedo or normal (default: the scene's)");
+    cmd->add_option("--max-depth", args->max_depth,
+                    "Maximum number of scattering events (default: the scene's)")
         ->check(CLI::Range(-1, 100000));
     cmd->add_option("--sampler", args->sampler, "sobol or independent (default: the scene's)");
     cmd->add_option("--resolution", args->resolution, "Film resolution WIDTHxHEIGHT (default: the scene's)");
@@ -164,6 +174,5 @@ void add_render_command(CLI::App& app) {
     cmd->add_flag("--strict", args->strict, "Unsupported scene features are errors, not warnings");
     cmd->callback([args] { run(*args); });
 }
-
 
 } // namespace illum::cli

@@ -52,7 +52,7 @@ TEST(PerspectiveCamera, ThinLensRaysMeetAtTheFocalDistance) {
         Point2f u{rng.uniform_float(), rng.uniform_float()};
         Ray r = cam.generate_ray(p, u), c = pinhole.generate_ray(p, u);
         // The pinhole ray through the same film point meets the plane z = focal where the lens ray does.
-        Point3f a = r(( focal - r.o.z) / r.d.z), b = c((focal - c.o.z) / c.d.z);
+        Point3f a = r((focal - r.o.z) / r.d.z), b = c((focal - c.o.z) / c.d.z);
         EXPECT_NEAR(a.x, b.x, 1e-4);
         EXPECT_NEAR(a.y, b.y, 1e-4);
         EXPECT_LE(std::hypot(r.o.x, r.o.y), 0.2f + 1e-6f);

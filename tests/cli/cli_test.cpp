@@ -24,8 +24,8 @@ struct CliRun {
 // Runs illum with the arguments (a shell-quoted string) and captures stdout and stderr.
 CliRun illum(const std::string& args, const fs::path& dir) {
     fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    std::string cmd = "cd '" + dir.string() + "' && '" + ILLUM_CLI_PATH + "' " + args + " > '" + out.string() +
-                      "' 2> '" + err.string() + "' < /dev/null";
+    std::string cmd = "cd '" + dir.string() + "' && '" + ILLUM_CLI_PATH + "' " + args + " > '" +
+                      out.string() + "' 2> '" + err.string() + "' < /dev/null";
     int status = std::system(cmd.c_str());
     CliRun r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -87,9 +87,11 @@ TEST_F(Cli, VersionAndHelp) {
 }
 
 TEST_F(Cli, BuiltInSceneRendersToEveryFormat) {
-    CliRun r = illum("render --resolution 32x32 --spp 2 -o a.png -o a.exr -o a.pfm -o a.hdr --stats s.json --quiet", dir_);
+    CliRun r = illum(
+        "render --resolution 32x32 --spp 2 -o a.png -o a.exr -o a.pfm -o a.hdr --stats s.json --quiet", dir_);
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    for (const char* f : {"a.png", "a.exr", "a.pfm", "a.hdr", "s.json"}) EXPECT_GT(fs::file_size(dir_ / f), 100u) << f;
+    for (const char* f : {"a.png", "a.exr", "a.pfm", "a.hdr", "s.json"})
+        EXPECT_GT(fs::file_size(dir_ / f), 100u) << f;
     auto stats = nlohmann::json::parse(read_bytes(dir_ / "s.json"));
     for (const char* key : {"seconds", "samples", "rays", "rays_per_second", "threads", "version", "spp"})
         EXPECT_TRUE(stats.contains(key)) << key;
@@ -160,7 +162,8 @@ TEST_F(Cli, BadSampleCounts) {
 }
 
 TEST_F(Cli, UnwritableOutputPath) {
-    expect_error(illum("render --resolution 8x8 --spp 1 -o /nonexistent/dir/x.exr", dir_), "/nonexistent/dir");
+    expect_error(illum("render --resolution 8x8 --spp 1 -o /nonexistent/dir/x.exr", dir_),
+                 "/nonexistent/dir");
     fs::create_directory(dir_ / "adir");
     expect_error(illum("render --resolution 8x8 --spp 1 -o adir", dir_), "adir");
 }
@@ -184,8 +187,9 @@ TEST_F(Cli, SceneErrorsNameFileLineColumn) {
     CliRun r = illum("render nan.pbrt -o x.exr", dir_);
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("nan.pbrt:1:"), std::string::npos) << r.err;
-    write_text(dir_ / "idx.pbrt",
-               "WorldBegin\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 5]\n");
+    write_text(
+        dir_ / "idx.pbrt",
+        "WorldBegin\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 5]\n");
     expect_error(illum("render idx.pbrt -o x.exr", dir_), "idx.pbrt:2:");
 }
 

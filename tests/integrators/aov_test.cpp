@@ -35,7 +35,8 @@ TEST(AovIntegrator, NormalPassKeepsSignedNormals) {
 
 TEST(AovIntegrator, NegativeNormalComponentsSurvive) {
     std::string scene = kScene;
-    scene += "Shape \"trianglemesh\" \"point3 P\" [0.3 -2 0 0.3 2 0 0.3 2 3 0.3 -2 3] \"integer indices\" [0 2 1 0 3 2]\n";
+    scene += "Shape \"trianglemesh\" \"point3 P\" [0.3 -2 0 0.3 2 0 0.3 2 3 0.3 -2 3] \"integer indices\" [0 "
+             "2 1 0 3 2]\n";
     // Seen from the side: the wall's normal (±x) has a negative component for one orientation.
     scene.replace(scene.find("LookAt 0 0 5  0 0 0  0 1 0"), 26, "LookAt 5 0 1  0 0 1  0 0 1");
     test::RenderSetup s;

@@ -49,12 +49,13 @@ AttributeEnd
 
 void expect_radiance(const RenderResult& r, double expected, const char* what, double rel_float = 2e-5) {
     auto g = pixel_mean(r.image, 1);
-    std::printf("%-32s expected %.6g, measured %.6g +- %.2g (%+.4f%%)\n", what, expected, g.mean, g.standard_error,
-                100 * (g.mean / expected - 1));
+    std::printf("%-32s expected %.6g, measured %.6g +- %.2g (%+.4f%%)\n", what, expected, g.mean,
+                g.standard_error, 100 * (g.mean / expected - 1));
     for (int c = 0; c < 3; ++c) {
         auto m = pixel_mean(r.image, c);
         double tol = kSigmas * m.standard_error + rel_float * expected;
-        EXPECT_NEAR(m.mean, expected, tol) << what << " channel " << c << " (standard error " << m.standard_error << ")";
+        EXPECT_NEAR(m.mean, expected, tol)
+            << what << " channel " << c << " (standard error " << m.standard_error << ")";
     }
     EXPECT_EQ(r.nonfinite_samples, 0u);
 }
@@ -80,17 +81,22 @@ TEST(Radiometry, RuleOfFive) {
     const double L = 1.0, r = 0.2;
     for (double h : {5 * r, 10 * r, 1 * r}) {
         double intensity = L * kPiD * r * r;
-        auto point = render_pbrt(receiver(fmt::format(R"(LightSource "point" "point3 from" [0 0 {}] "rgb I" [{} {} {}])", h,
-                                                      intensity, intensity, intensity)),
-                                 {});
+        auto point = render_pbrt(
+            receiver(fmt::format(R"(LightSource "point" "point3 from" [0 0 {}] "rgb I" [{} {} {}])", h,
+                                 intensity, intensity, intensity)),
+            {});
         auto disk = render_pbrt(receiver(disk_light(r, h, L)), {});
         double e_point = point.image.channel_mean().g, e_disk = pixel_mean(disk.image, 1).mean;
         EXPECT_NEAR(e_point, intensity / (h * h) / kPiD, 1e-5 * e_point) << "a point source is exact";
         double ratio = e_disk / e_point, expected_ratio = h * h / (r * r + h * h);
-        std::printf("rule of five h=%gr: E_disk/E_point %.5f (closed form %.5f)\n", h / r, ratio, expected_ratio);
-        EXPECT_NEAR(ratio, expected_ratio, kSigmas * pixel_mean(disk.image, 1).standard_error / e_point + 1e-4);
-        if (h >= 5 * r) EXPECT_GT(ratio, 0.96) << "point approximation within 4% beyond five radii";
-        else EXPECT_LT(ratio, 0.6) << "and far off at one radius";
+        std::printf("rule of five h=%gr: E_disk/E_point %.5f (closed form %.5f)\n", h / r, ratio,
+                    expected_ratio);
+        EXPECT_NEAR(ratio, expected_ratio,
+                    kSigmas * pixel_mean(disk.image, 1).standard_error / e_point + 1e-4);
+        if (h >= 5 * r)
+            EXPECT_GT(ratio, 0.96) << "point approximation within 4% beyond five radii";
+        else
+            EXPECT_LT(ratio, 0.6) << "and far off at one radius";
     }
 }
 
@@ -107,12 +113,13 @@ AttributeBegin
   Shape "sphere" "float radius" [{}]
 AttributeEnd
 )",
-                                         L, L, L, d, R);
+                                        L, L, L, d, R);
         for (const char* integrator : {"direct", "path"}) {
             RenderSetup s;
             s.integrator = integrator;
             auto res = render_pbrt(receiver(world, 16, integrator), s);
-            expect_radiance(res, L * (R / d) * (R / d), fmt::format("{} R={} d={}", integrator, R, d).c_str(), 1e-4);
+            expect_radiance(res, L * (R / d) * (R / d), fmt::format("{} R={} d={}", integrator, R, d).c_str(),
+                            1e-4);
         }
     }
 }
@@ -128,14 +135,16 @@ TEST(Radiometry, PolygonIrradiance) {
         for (int i = 0; i < 4; ++i) {
             int j = (i + 1) % 4;
             double p[3] = {vx[i], vy[i], h}, q[3] = {vx[j], vy[j], h};
-            double lp = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), lq = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+            double lp = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]),
+                   lq = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
             double theta = std::acos((p[0] * q[0] + p[1] * q[1] + p[2] * q[2]) / (lp * lq));
             double c[3] = {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
             double lc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
             phi_z += 0.5 * theta * c[2] / lc;
         }
         double e = L * std::abs(phi_z);
-        std::string world = fmt::format(R"(
+        std::string world =
+            fmt::format(R"(
 AttributeBegin
   Material "diffuse" "rgb reflectance" [0 0 0]
   AreaLightSource "diffuse" "rgb L" [{L} {L} {L}]
@@ -143,9 +152,9 @@ AttributeBegin
       "integer indices" [0 2 1 0 3 2]
 AttributeEnd
 )",
-                                         fmt::arg("L", L), fmt::arg("h", h), fmt::arg("x0", vx[0]), fmt::arg("y0", vy[0]),
-                                         fmt::arg("x1", vx[1]), fmt::arg("y1", vy[1]), fmt::arg("x2", vx[2]),
-                                         fmt::arg("y2", vy[2]), fmt::arg("x3", vx[3]), fmt::arg("y3", vy[3]));
+                        fmt::arg("L", L), fmt::arg("h", h), fmt::arg("x0", vx[0]), fmt::arg("y0", vy[0]),
+                        fmt::arg("x1", vx[1]), fmt::arg("y1", vy[1]), fmt::arg("x2", vx[2]),
+                        fmt::arg("y2", vy[2]), fmt::arg("x3", vx[3]), fmt::arg("y3", vy[3]));
         for (const char* integrator : {"direct", "path"}) {
             RenderSetup s;
             s.integrator = integrator;
@@ -193,7 +202,8 @@ Shape "sphere" "float radius" [1]
 // distance (exactly: no sampling is involved at depth 0).
 TEST(Radiometry, RadianceInvarianceWithDistance) {
     for (double d : {0.5, 5.0, 500.0}) {
-        std::string scene = fmt::format(R"(
+        std::string scene =
+            fmt::format(R"(
 LookAt 0 0 {d}  0 0 0  0 1 0
 Camera "perspective" "float fov" [{fov}]
 Film "rgb" "integer xresolution" [8] "integer yresolution" [8]
@@ -202,7 +212,7 @@ Material "diffuse" "rgb reflectance" [0 0 0]
 AreaLightSource "diffuse" "rgb L" [0.25 1.5 4]
 Shape "trianglemesh" "point3 P" [-1 -1 0 1 -1 0 1 1 0 -1 1 0] "integer indices" [0 1 2 0 2 3]
 )",
-                                        fmt::arg("d", d), fmt::arg("fov", 2 * std::atan(0.8 / d) * 180 / kPiD));
+                        fmt::arg("d", d), fmt::arg("fov", 2 * std::atan(0.8 / d) * 180 / kPiD));
         auto res = render_pbrt(scene, {});
         for (int y = 0; y < 8; ++y)
             for (int x = 0; x < 8; ++x) {
@@ -234,7 +244,8 @@ Shape "trianglemesh" "point3 P" [-100 -100 0 100 -100 0 100 100 0 -100 100 0] "i
         const double l[3] = {1, 0.5, 0.25};
         for (int c = 0; c < 3; ++c) {
             auto m = pixel_mean(res.image, c);
-            EXPECT_NEAR(m.mean, rho * l[c], kSigmas * m.standard_error + 1e-5) << integrator << " channel " << c;
+            EXPECT_NEAR(m.mean, rho * l[c], kSigmas * m.standard_error + 1e-5)
+                << integrator << " channel " << c;
         }
     }
 }

@@ -101,12 +101,14 @@ TEST(EnvSampling, ChiSquareAgainstPdf) {
             // meets the neighbour's density. Such samples must stay rare: a wrong Jacobian or density
             // fails for whole regions.)
             float p = light.pdf_li(ctx, s->wi, nullptr).value;
-            if (std::abs(s->pdf.value - p) > (layout == EnvLayout::Angular ? 2e-2f : 2e-3f) * p) ++pdf_mismatches;
+            if (std::abs(s->pdf.value - p) > (layout == EnvLayout::Angular ? 2e-2f : 2e-3f) * p)
+                ++pdf_mismatches;
             Point2f uv = env_uv(layout, normalize(inv(s->wi)));
             int x = std::clamp(int(uv.x * w), 0, w - 1), y = std::clamp(int(uv.y * h), 0, h - 1);
             observed[std::size_t(y) * w + x] += 1;
         }
-        EXPECT_LE(pdf_mismatches, n / 10000) << to_string(layout) << ": samples whose pdf differs from pdf_li";
+        EXPECT_LE(pdf_mismatches, n / 10000)
+            << to_string(layout) << ": samples whose pdf differs from pdf_li";
         std::printf("%s: %d of %d samples' pdf differs from pdf_li beyond round-off\n", to_string(layout),
                     pdf_mismatches, n);
         const int k = 4;

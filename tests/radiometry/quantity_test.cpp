@@ -9,9 +9,13 @@ namespace illum {
 namespace {
 
 template <class A, class B>
-concept Addable = requires(A a, B b) { a + b; };
+concept Addable = requires(A a, B b) {
+    a + b;
+};
 template <class A, class B>
-concept Multipliable = requires(A a, B b) { a* b; };
+concept Multipliable = requires(A a, B b) {
+    a* b;
+};
 template <class A, class B>
 using Product = decltype(std::declval<A>() * std::declval<B>());
 template <class A, class B>

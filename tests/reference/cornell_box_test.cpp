@@ -58,7 +58,8 @@ NoiseCheck noise_check(const Image& a, const Image& b, const Image& ref, int c, 
     double sum = 0, sum2 = 0, mse_ref = 0, mse_ab = 0;
     std::size_t n = a.pixel_count();
     for (std::size_t i = 0; i < n; ++i) {
-        double ea = scale * a.data()[i][c] - ref.data()[i][c], eab = scale * (a.data()[i][c] - b.data()[i][c]);
+        double ea = scale * a.data()[i][c] - ref.data()[i][c],
+               eab = scale * (a.data()[i][c] - b.data()[i][c]);
         double d = ea * ea - 0.5 * eab * eab;
         sum += d;
         sum2 += d * d;
@@ -94,10 +95,11 @@ TEST_F(CornellBoxRenders, MatchesTheRgbReferenceWithinNoise) {
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(ma[c] / mr[c], 1.0, 0.01) << "channel mean " << c;
         NoiseCheck k = noise_check(*a_, *b_, *ref_, c);
-        std::printf("channel %d: mean %.6f (reference %.6f, %+.3f%%), MSE vs reference %.4g, noise %.4g, ratio %.4f, "
-                    "d = %.3g +- %.3g\n",
-                    c, ma[c], mr[c], 100 * (ma[c] / mr[c] - 1), k.mse_ref, k.mse_noise, k.mse_ref / k.mse_noise, k.mean,
-                    k.standard_error);
+        std::printf(
+            "channel %d: mean %.6f (reference %.6f, %+.3f%%), MSE vs reference %.4g, noise %.4g, ratio %.4f, "
+            "d = %.3g +- %.3g\n",
+            c, ma[c], mr[c], 100 * (ma[c] / mr[c] - 1), k.mse_ref, k.mse_noise, k.mse_ref / k.mse_noise,
+            k.mean, k.standard_error);
         EXPECT_LT(std::abs(k.mean), kSigmas * k.standard_error)
             << "channel " << c << ": MSE vs reference " << k.mse_ref << ", noise " << k.mse_noise;
     }

@@ -44,11 +44,10 @@ TEST(Alpha, ConstantAlphaLetsThroughOneMinusAlpha) {
 TEST(Alpha, CheckerboardAlphaIsHoles) {
     test::RenderSetup s;
     s.spp = 16;
-    auto r = test::render_pbrt(
-        through_occluder(
-            "Texture \"holes\" \"float\" \"checkerboard\" \"float tex1\" [0] \"float tex2\" [1] \"float uscale\" [4] "
-            "\"float vscale\" [4]\n\"texture alpha\" \"holes\""),
-        s);
+    auto r = test::render_pbrt(through_occluder("Texture \"holes\" \"float\" \"checkerboard\" \"float tex1\" "
+                                                "[0] \"float tex2\" [1] \"float uscale\" [4] "
+                                                "\"float vscale\" [4]\n\"texture alpha\" \"holes\""),
+                               s);
     // 16 pixels across 4 checks: each pixel is wholly hole (radiance 1) or wholly opaque (0).
     int holes = 0, solid = 0;
     for (int y = 0; y < 16; ++y)

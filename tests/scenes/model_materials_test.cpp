@@ -46,8 +46,10 @@ TEST(ModelMaterials, EveryModelRendersFromASceneFile) {
 TEST(ModelMaterials, RegistryLambertIsPbrtDiffuse) {
     test::RenderSetup s;
     s.spp = 4;
-    Image a = test::render_pbrt(sphere_scene(R"(Material "lambert" "rgb reflectance" [0.2 0.5 0.7])"), s).image;
-    Image b = test::render_pbrt(sphere_scene(R"(Material "diffuse" "rgb reflectance" [0.2 0.5 0.7])"), s).image;
+    Image a =
+        test::render_pbrt(sphere_scene(R"(Material "lambert" "rgb reflectance" [0.2 0.5 0.7])"), s).image;
+    Image b =
+        test::render_pbrt(sphere_scene(R"(Material "diffuse" "rgb reflectance" [0.2 0.5 0.7])"), s).image;
     EXPECT_TRUE(a == b) << "the same model, sampled the same way, gives the same pixels";
 }
 
@@ -82,10 +84,16 @@ Texture "c" "spectrum" "checkerboard" "texture tex1" "lo" "texture tex2" "hi" "f
 Material "oren-nayar" "texture reflectance" "c" "float sigma" [20])";
     // Both levels show: the image lies well between the all-dark and the all-bright sphere.
     float mid = test::render_pbrt(sphere_scene(checker), s).image.channel_mean().g;
-    float lo = test::render_pbrt(sphere_scene(R"(Material "oren-nayar" "rgb reflectance" [0.05 0.05 0.05] "float sigma" [20])"), s)
-                   .image.channel_mean().g;
-    float hi = test::render_pbrt(sphere_scene(R"(Material "oren-nayar" "rgb reflectance" [0.9 0.9 0.9] "float sigma" [20])"), s)
-                   .image.channel_mean().g;
+    float lo =
+        test::render_pbrt(
+            sphere_scene(R"(Material "oren-nayar" "rgb reflectance" [0.05 0.05 0.05] "float sigma" [20])"), s)
+            .image.channel_mean()
+            .g;
+    float hi =
+        test::render_pbrt(
+            sphere_scene(R"(Material "oren-nayar" "rgb reflectance" [0.9 0.9 0.9] "float sigma" [20])"), s)
+            .image.channel_mean()
+            .g;
     EXPECT_GT(mid, lo + 0.2f * (hi - lo));
     EXPECT_LT(mid, hi - 0.2f * (hi - lo));
     // A texture beyond the parameter's range is clamped to it: reflectance 5 acts as 1.
@@ -106,12 +114,15 @@ TEST(ModelMaterials, TexturesThatBreakEnergyConservationAreScaledDown) {
 Material "ward" "texture rho_d" "d" "rgb rho_s" [0.5 0.5 0.5])"),
                                 s)
                   .image;
-    Image b = test::render_pbrt(
-                  sphere_scene(R"(Material "ward" "rgb rho_d" [0.642857 0.642857 0.642857] "rgb rho_s" [0.357143 0.357143 0.357143])"),
-                  s)
-                  .image;
+    Image b =
+        test::render_pbrt(
+            sphere_scene(
+                R"(Material "ward" "rgb rho_d" [0.642857 0.642857 0.642857] "rgb rho_s" [0.357143 0.357143 0.357143])"),
+            s)
+            .image;
     for (std::size_t i = 0; i < a.pixel_count(); ++i)
-        for (int c = 0; c < 3; ++c) ASSERT_NEAR(a.data()[i][c], b.data()[i][c], 1e-4f + 1e-4f * b.data()[i][c]);
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(a.data()[i][c], b.data()[i][c], 1e-4f + 1e-4f * b.data()[i][c]);
 }
 
 TEST(ModelMaterials, ParametersAreCheckedWithTheirPosition) {

@@ -158,8 +158,9 @@ Shape "trianglemesh" "point3 P" [-5 -5 0 5 -5 0 5 5 0 -5 5 0] "integer indices" 
   Shape "sphere" "float radius" [0.4]
   Shape "trianglemesh" "point3 P" [0.5 -0.3 0 1.1 -0.3 0 1.1 0.3 0.6] "integer indices" [0 1 2]
 )";
-    // (Not a mirror: pbrt flips a mirrored copy's normals for the handedness of its own transform, but carries
-    // an instance's hit out through the instance transform without that flip, so the two differ in sign.)
+    // (Not a mirror: pbrt flips a mirrored copy's normals for the handedness of its own transform, but
+    // carries an instance's hit out through the instance transform without that flip, so the two differ in
+    // sign.)
     const char* places[] = {"Translate -2 0 0.4", "Translate 0 0 0.4 Rotate 40 0 0 1",
                             "Translate 2 0 0.4 Rotate 70 1 1 0 Scale 1.3 1.3 1.3"};
     std::string instanced = std::string(head) + "ObjectBegin \"o\"" + object + "ObjectEnd\n";

@@ -49,7 +49,7 @@ std::unique_ptr<Scene> make_gallery_scene(int width, int height) {
     s.color_textures.push_back(std::make_unique<ConstantColorTexture>(Color3(0.35f)));
     s.color_textures.push_back(std::make_unique<ConstantColorTexture>(Color3(0.6f)));
     s.color_textures.push_back(std::make_unique<CheckerboardColorTexture>(s.color_textures[0].get(),
-                                                                         s.color_textures[1].get(), 12, 12));
+                                                                          s.color_textures[1].get(), 12, 12));
     s.materials.push_back(std::make_unique<DiffuseMaterial>(s.color_textures.back().get()));
     s.accelerator.add_mesh(quad({0, 0, 0}, {12, 0, 0}, {0, 12, 0}), s.materials.back().get(), {});
 
@@ -57,7 +57,8 @@ std::unique_ptr<Scene> make_gallery_scene(int width, int height) {
         int col = int(i) % columns, row = int(i) / columns;
         // Row 0 at the back, so the image reads like the list: left to right, top to bottom. The camera
         // looks along +y with +z up, so by pbrt's LookAt image right is world -x.
-        Point3f c{((columns - 1) / 2.0f - col) * spacing, ((rows - 1) / 2.0f - row) * spacing * 1.15f, radius};
+        Point3f c{((columns - 1) / 2.0f - col) * spacing, ((rows - 1) / 2.0f - row) * spacing * 1.15f,
+                  radius};
         const ModelSpec& spec = find_bxdf_model(entries[i].model);
         auto bxdf = make_bxdf(entries[i].model, entries[i].params);
         // The albedo pass shows the directional albedo at normal incidence (Monte Carlo: it covers delta
@@ -65,7 +66,8 @@ std::unique_ptr<Scene> make_gallery_scene(int width, int height) {
         AlbedoEstimate a = directional_albedo(*bxdf, {0, 0, 1}, spec.delta, 16, 4096, 1);
         Color3 albedo(float(a.mc[0]), float(a.mc[1]), float(a.mc[2]));
         s.materials.push_back(std::make_unique<SharedBxDFMaterial>(std::move(bxdf), albedo));
-        s.accelerator.add_sphere(std::make_unique<SphereShape>(c, radius, false), s.materials.back().get(), nullptr);
+        s.accelerator.add_sphere(std::make_unique<SphereShape>(c, radius, false), s.materials.back().get(),
+                                 nullptr);
     }
 
     // A one-sided rectangular light above and in front, facing down towards the spheres.
@@ -78,8 +80,8 @@ std::unique_ptr<Scene> make_gallery_scene(int width, int height) {
     std::vector<const Light*> tri_lights;
     for (std::uint32_t t = 0; t < light_mesh->triangle_count(); ++t) {
         s.light_shapes.push_back(std::make_unique<TriangleShape>(light_mesh.get(), t));
-        s.lights.push_back(
-            std::make_unique<DiffuseAreaLight>(s.light_shapes.back().get(), Radiance3(6.0f, 5.8f, 5.4f), false));
+        s.lights.push_back(std::make_unique<DiffuseAreaLight>(s.light_shapes.back().get(),
+                                                              Radiance3(6.0f, 5.8f, 5.4f), false));
         tri_lights.push_back(s.lights.back().get());
     }
     s.accelerator.add_mesh(std::move(light_mesh), s.materials.back().get(), std::move(tri_lights));

@@ -20,9 +20,9 @@ public:
         ILLUM_REQUIRE(in_range(kd, 0, 1), "blinn-phong", "kd must be in [0, 1], got " + str(kd));
         ILLUM_REQUIRE(in_range(ks, 0, 1), "blinn-phong", "ks must be in [0, 1], got " + str(ks));
         ILLUM_REQUIRE(in_range(kd + ks, 0, 1), "blinn-phong",
-                "kd + ks must be <= 1 for energy conservation, got " + str(kd + ks));
+                      "kd + ks must be <= 1 for energy conservation, got " + str(kd + ks));
         ILLUM_REQUIRE(in_range(exponent, 0, 1e5f), "blinn-phong",
-                "exponent must be in [0, 100000], got " + str(exponent));
+                      "exponent must be in [0, 100000], got " + str(exponent));
         p_spec_ = specular_lobe_probability(kd, ks);
     }
     std::uint8_t flags() const override { return kDiffuseReflection | kGlossyReflection; }

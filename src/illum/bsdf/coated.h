@@ -65,9 +65,9 @@ public:
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(eta, 1e-3f, 100), name, "eta must be in (0, 100], got " + str(eta));
         ILLUM_REQUIRE(max_depth >= 1 && max_depth <= 1000, name,
-                "max_depth must be in [1, 1000], got " + std::to_string(max_depth));
+                      "max_depth must be in [1, 1000], got " + std::to_string(max_depth));
         ILLUM_REQUIRE(samples >= 1 && samples <= 1000, name,
-                "samples must be in [1, 1000], got " + std::to_string(samples));
+                      "samples must be in [1, 1000], got " + std::to_string(samples));
     }
     std::uint8_t flags() const override {
         std::uint8_t f = kReflection | kSpecular;

@@ -13,7 +13,9 @@ inline Vector3f reflect_z(Vector3f w) { return {-w.x, -w.y, w.z}; }
 
 namespace bsdf_detail {
 // Parameter validation for the model constructors (they throw illum::Error with a clear message).
-[[noreturn]] inline void fail(const char* model, const std::string& what) { throw Error(std::string(model) + ": " + what); }
+[[noreturn]] inline void fail(const char* model, const std::string& what) {
+    throw Error(std::string(model) + ": " + what);
+}
 inline bool in_range(float v, float lo, float hi) { return v >= lo && v <= hi; } // false for NaN
 inline bool in_range(Color3 c, float lo, float hi) {
     return in_range(c.r, lo, hi) && in_range(c.g, lo, hi) && in_range(c.b, lo, hi);

@@ -25,7 +25,8 @@ public:
         ILLUM_REQUIRE(in_range(kd, 0, 1), "cook-torrance", "kd must be in [0, 1], got " + str(kd));
         ILLUM_REQUIRE(in_range(ks, 0, 1), "cook-torrance", "ks must be in [0, 1], got " + str(ks));
         ILLUM_REQUIRE(in_range(kd + ks, 0, 1), "cook-torrance", "kd + ks must be <= 1, got " + str(kd + ks));
-        ILLUM_REQUIRE(in_range(m, 1e-3f, 1), "cook-torrance", "roughness m must be in [0.001, 1], got " + str(m));
+        ILLUM_REQUIRE(in_range(m, 1e-3f, 1), "cook-torrance",
+                      "roughness m must be in [0.001, 1], got " + str(m));
         Color3 e = fresnel.eta;
         ILLUM_REQUIRE(e.r > 0 && e.g > 0 && e.b > 0, "cook-torrance", "eta must be > 0, got " + str(e));
         ILLUM_REQUIRE(in_range(fresnel.k, 0, 1e4f), "cook-torrance", "k must be >= 0, got " + str(fresnel.k));

@@ -14,11 +14,12 @@ class DiffuseTransmissionBxDF final : public BxDF {
 public:
     DiffuseTransmissionBxDF(Color3 reflectance, Color3 transmittance) : r_(reflectance), t_(transmittance) {
         using namespace bsdf_detail;
-        ILLUM_REQUIRE(in_range(r_, 0, 1), "diffuse-transmission", "reflectance must be in [0, 1], got " + str(r_));
+        ILLUM_REQUIRE(in_range(r_, 0, 1), "diffuse-transmission",
+                      "reflectance must be in [0, 1], got " + str(r_));
         ILLUM_REQUIRE(in_range(t_, 0, 1), "diffuse-transmission",
-                "transmittance must be in [0, 1], got " + str(t_));
+                      "transmittance must be in [0, 1], got " + str(t_));
         ILLUM_REQUIRE(in_range(r_ + t_, 0, 1), "diffuse-transmission",
-                "reflectance + transmittance must be <= 1, got " + str(r_ + t_));
+                      "reflectance + transmittance must be <= 1, got " + str(r_ + t_));
         float r = r_.average(), t = t_.average();
         p_r_ = r + t > 0 ? r / (r + t) : 0.5f;
     }

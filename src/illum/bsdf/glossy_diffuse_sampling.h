@@ -32,8 +32,8 @@ float glossy_diffuse_pdf(const Lobe& lobe, float p_glossy, Vector3f wo, Vector3f
 
 // The sample of `model` (its f() and pdf() give the value and the exact mixture density).
 template <class Model, class Lobe>
-std::optional<BSDFSample> sample_glossy_diffuse(const Model& model, const Lobe& lobe, float p_glossy, Vector3f wo,
-                                                float uc, Point2f u, TransportMode mode) {
+std::optional<BSDFSample> sample_glossy_diffuse(const Model& model, const Lobe& lobe, float p_glossy,
+                                                Vector3f wo, float uc, Point2f u, TransportMode mode) {
     if (wo.z == 0) return std::nullopt;
     Vector3f wi;
     if (uc < p_glossy) {

@@ -26,7 +26,9 @@ public:
         Color3 r = clamp(reflectance_->evaluate(hit), 0.0f, 1.0f);
         return BSDF(arena.make<LambertBxDF>(r), hit.shading_frame());
     }
-    Color3 albedo(const SurfaceHit& hit) const override { return clamp(reflectance_->evaluate(hit), 0.0f, 1.0f); }
+    Color3 albedo(const SurfaceHit& hit) const override {
+        return clamp(reflectance_->evaluate(hit), 0.0f, 1.0f);
+    }
 
 private:
     const ColorTexture* reflectance_;

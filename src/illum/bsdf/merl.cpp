@@ -157,11 +157,11 @@ Bsdf3 MerlBxDF::f(Vector3f wo, Vector3f wi, TransportMode) const {
 }
 
 std::optional<BSDFSample> MerlBxDF::sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const {
-        return sample_glossy_diffuse(*this, lobe_, p_lobe_, wo, uc, u, mode);
-    }
+    return sample_glossy_diffuse(*this, lobe_, p_lobe_, wo, uc, u, mode);
+}
 
 SolidAnglePdf MerlBxDF::pdf(Vector3f wo, Vector3f wi, TransportMode) const {
-        return SolidAnglePdf(glossy_diffuse_pdf(lobe_, p_lobe_, wo, wi));
-    }
+    return SolidAnglePdf(glossy_diffuse_pdf(lobe_, p_lobe_, wo, wi));
+}
 
 } // namespace illum

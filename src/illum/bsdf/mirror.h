@@ -11,7 +11,7 @@ public:
     explicit MirrorBxDF(Color3 reflectance = Color3(1)) : reflectance_(reflectance) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(reflectance, 0, 1), "mirror",
-                "reflectance must be in [0, 1], got " + str(reflectance));
+                      "reflectance must be in [0, 1], got " + str(reflectance));
     }
     std::uint8_t flags() const override { return kSpecularReflection; }
     Bsdf3 f(Vector3f, Vector3f, TransportMode) const override { return {}; }

@@ -17,9 +17,9 @@ public:
     OrenNayarBxDF(Color3 reflectance, float sigma_degrees) : reflectance_(reflectance) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(reflectance, 0, 1), "oren-nayar",
-                "reflectance must be in [0, 1], got " + str(reflectance));
+                      "reflectance must be in [0, 1], got " + str(reflectance));
         ILLUM_REQUIRE(in_range(sigma_degrees, 0, 90), "oren-nayar",
-                "sigma must be in [0, 90] degrees, got " + str(sigma_degrees));
+                      "sigma must be in [0, 90] degrees, got " + str(sigma_degrees));
         float s2 = sqr(sigma_degrees * kPi / 180);
         a_ = 1 - s2 / (2 * (s2 + 0.33f));
         b_ = 0.45f * s2 / (s2 + 0.09f);

@@ -187,7 +187,9 @@ std::vector<ModelSpec> build_models() {
          false,
          false,
          "",
-         factory([](const auto& p, const auto& m) { return m.template make<LambertBxDF>(p.rgb("reflectance")); })});
+         factory([](const auto& p, const auto& m) {
+             return m.template make<LambertBxDF>(p.rgb("reflectance"));
+         })});
     m.push_back({"oren-nayar",
                  "rough diffuse reflection (Oren & Nayar 1994, qualitative model)",
                  {rgb("reflectance", "0.5", 0, 1, "facet albedo ρ"),
@@ -210,7 +212,9 @@ std::vector<ModelSpec> build_models() {
                  false,
                  false,
                  "",
-                 factory([](const auto& p, const auto& m) { return m.template make<MirrorBxDF>(p.rgb("reflectance")); })});
+                 factory([](const auto& p, const auto& m) {
+                     return m.template make<MirrorBxDF>(p.rgb("reflectance"));
+                 })});
     m.push_back({"dielectric",
                  "smooth dielectric interface (glass): Fresnel reflection and refraction",
                  {scalar("eta", 1.5, 1e-3, 100, "index of refraction inside / outside"), fresnel_choice()},
@@ -295,7 +299,7 @@ std::vector<ModelSpec> build_models() {
          "",
          factory([](const auto& p, const auto& m) {
              return m.template make<TorranceSparrowBxDF>(p.rgb("kd"), p.rgb("ks"), p.scalar("sigma"),
-                                                          Fresnel{p.rgb("eta"), p.rgb("k"), fresnel_mode(p)});
+                                                         Fresnel{p.rgb("eta"), p.rgb("k"), fresnel_mode(p)});
          })});
     m.push_back(
         {"cook-torrance",
@@ -313,7 +317,7 @@ std::vector<ModelSpec> build_models() {
          "",
          factory([](const auto& p, const auto& m) {
              return m.template make<CookTorranceBxDF>(p.rgb("kd"), p.rgb("ks"), p.scalar("m"),
-                                                       Fresnel{p.rgb("eta"), p.rgb("k"), fresnel_mode(p)});
+                                                      Fresnel{p.rgb("eta"), p.rgb("k"), fresnel_mode(p)});
          })});
     {
         auto params = alpha_params(0.3);
@@ -357,7 +361,7 @@ std::vector<ModelSpec> build_models() {
                      "eta",
                      factory([](const auto& p, const auto& m) {
                          return m.template make<RoughDielectricBxDF>(distribution(p), p.scalar("eta"),
-                                                                      fresnel_mode(p));
+                                                                     fresnel_mode(p));
                      })});
     }
     m.push_back({"ward",
@@ -377,8 +381,8 @@ std::vector<ModelSpec> build_models() {
                  factory([](const auto& p, const auto& m) {
                      float a = p.scalar("alpha");
                      return m.template make<WardBxDF>(p.rgb("rho_d"), p.rgb("rho_s"),
-                                                       p.has("alpha_x") ? p.scalar("alpha_x") : a,
-                                                       p.has("alpha_y") ? p.scalar("alpha_y") : a);
+                                                      p.has("alpha_x") ? p.scalar("alpha_x") : a,
+                                                      p.has("alpha_y") ? p.scalar("alpha_y") : a);
                  })});
     m.push_back({"coated-diffuse",
                  "Lambertian base under a smooth dielectric coat (stochastic layered)",
@@ -431,7 +435,7 @@ std::vector<ModelSpec> build_models() {
                  "",
                  factory([](const auto& p, const auto& m) {
                      return m.template make<DiffuseTransmissionBxDF>(p.rgb("reflectance"),
-                                                                      p.rgb("transmittance"));
+                                                                     p.rgb("transmittance"));
                  })});
     m.push_back({"merl",
                  "measured isotropic BRDF from a MERL .binary table",
@@ -473,7 +477,7 @@ std::vector<ModelSpec> build_models() {
          "",
          factory([](const auto& p, const auto& m) {
              return m.template make<ToonBxDF>(p.rgb("reflectance"), p.rgb("ks"), p.integer("bands"),
-                                               p.scalar("highlight"));
+                                              p.scalar("highlight"));
          })});
     // Energy conservation ties these parameters together (each model's constructor checks it).
     for (ModelSpec& spec : m) {

@@ -51,10 +51,10 @@ public:
     struct Value {
         std::string name;
         ParamKind kind = ParamKind::Scalar;
-        Color3 constant;                       // Scalar, Rgb, Integer (in .r)
-        std::string text;                      // Choice, Path
-        const ColorTexture* color = nullptr;   // a textured Rgb parameter
-        const FloatTexture* scalar = nullptr;  // a textured Scalar parameter
+        Color3 constant;                      // Scalar, Rgb, Integer (in .r)
+        std::string text;                     // Choice, Path
+        const ColorTexture* color = nullptr;  // a textured Rgb parameter
+        const FloatTexture* scalar = nullptr; // a textured Scalar parameter
         float lo = 0, hi = 0;
         int unit_sum_group = -1; // index into ModelSpec::unit_sums, -1 for none
     };

@@ -16,7 +16,7 @@ namespace illum {
 namespace bsdf_detail {
 inline void check_alpha(const char* model, float ax, float ay) {
     ILLUM_REQUIRE(in_range(ax, 1e-3f, 2) && in_range(ay, 1e-3f, 2), model,
-            "roughness alpha must be in [0.001, 2], got " + str(ax) + (ax == ay ? "" : ", " + str(ay)));
+                  "roughness alpha must be in [0.001, 2], got " + str(ax) + (ax == ay ? "" : ", " + str(ay)));
 }
 } // namespace bsdf_detail
 
@@ -28,7 +28,8 @@ public:
         check_alpha("rough-conductor", distrib.alpha_x(), distrib.alpha_y());
         Color3 e = fresnel.eta;
         ILLUM_REQUIRE(e.r > 0 && e.g > 0 && e.b > 0, "rough-conductor", "eta must be > 0, got " + str(e));
-        ILLUM_REQUIRE(in_range(fresnel.k, 0, 1e4f), "rough-conductor", "k must be >= 0, got " + str(fresnel.k));
+        ILLUM_REQUIRE(in_range(fresnel.k, 0, 1e4f), "rough-conductor",
+                      "k must be >= 0, got " + str(fresnel.k));
     }
     std::uint8_t flags() const override { return kGlossyReflection; }
 

@@ -22,7 +22,8 @@ public:
         : distrib_(distrib), fresnel_{eta, mode} {
         using namespace bsdf_detail;
         check_alpha("rough-dielectric", distrib.alpha_x(), distrib.alpha_y());
-        ILLUM_REQUIRE(in_range(eta, 1e-3f, 100), "rough-dielectric", "eta must be in (0, 100], got " + str(eta));
+        ILLUM_REQUIRE(in_range(eta, 1e-3f, 100), "rough-dielectric",
+                      "eta must be in (0, 100], got " + str(eta));
     }
     std::uint8_t flags() const override { return kGlossyReflection | kGlossyTransmission; }
     float eta() const { return fresnel_.eta; }

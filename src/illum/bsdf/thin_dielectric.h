@@ -15,7 +15,8 @@ class ThinDielectricBxDF final : public BxDF {
 public:
     explicit ThinDielectricBxDF(float eta, FresnelMode mode = FresnelMode::Exact) : fresnel_{eta, mode} {
         using namespace bsdf_detail;
-        ILLUM_REQUIRE(in_range(eta, 1e-3f, 100), "thin-dielectric", "eta must be in (0, 100], got " + str(eta));
+        ILLUM_REQUIRE(in_range(eta, 1e-3f, 100), "thin-dielectric",
+                      "eta must be in (0, 100], got " + str(eta));
     }
     std::uint8_t flags() const override { return kSpecularReflection | kSpecularTransmission; }
     Bsdf3 f(Vector3f, Vector3f, TransportMode) const override { return {}; }

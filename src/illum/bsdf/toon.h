@@ -18,11 +18,12 @@ public:
         : rho_(reflectance), ks_(ks), bands_(float(bands)) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(reflectance, 0, 1), "toon",
-                "reflectance must be in [0, 1], got " + str(reflectance));
+                      "reflectance must be in [0, 1], got " + str(reflectance));
         ILLUM_REQUIRE(in_range(ks, 0, 1), "toon", "ks must be in [0, 1], got " + str(ks));
-        ILLUM_REQUIRE(bands >= 1 && bands <= 64, "toon", "bands must be in [1, 64], got " + std::to_string(bands));
+        ILLUM_REQUIRE(bands >= 1 && bands <= 64, "toon",
+                      "bands must be in [1, 64], got " + std::to_string(bands));
         ILLUM_REQUIRE(in_range(highlight_degrees, 0, 90), "toon",
-                "highlight must be in [0, 90] degrees, got " + str(highlight_degrees));
+                      "highlight must be in [0, 90] degrees, got " + str(highlight_degrees));
         cos_highlight_ = std::cos(highlight_degrees * kPi / 180);
     }
     std::uint8_t flags() const override { return kDiffuseReflection; }

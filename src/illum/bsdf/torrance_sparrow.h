@@ -27,12 +27,14 @@ public:
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(kd, 0, 1), "torrance-sparrow", "kd must be in [0, 1], got " + str(kd));
         ILLUM_REQUIRE(in_range(ks, 0, 1), "torrance-sparrow", "ks must be in [0, 1], got " + str(ks));
-        ILLUM_REQUIRE(in_range(kd + ks, 0, 1), "torrance-sparrow", "kd + ks must be <= 1, got " + str(kd + ks));
+        ILLUM_REQUIRE(in_range(kd + ks, 0, 1), "torrance-sparrow",
+                      "kd + ks must be <= 1, got " + str(kd + ks));
         ILLUM_REQUIRE(in_range(sigma_degrees, 0.1f, 60), "torrance-sparrow",
-                "sigma must be in [0.1, 60] degrees, got " + str(sigma_degrees));
+                      "sigma must be in [0.1, 60] degrees, got " + str(sigma_degrees));
         Color3 e = fresnel.eta;
         ILLUM_REQUIRE(e.r > 0 && e.g > 0 && e.b > 0, "torrance-sparrow", "eta must be > 0, got " + str(e));
-        ILLUM_REQUIRE(in_range(fresnel.k, 0, 1e4f), "torrance-sparrow", "k must be >= 0, got " + str(fresnel.k));
+        ILLUM_REQUIRE(in_range(fresnel.k, 0, 1e4f), "torrance-sparrow",
+                      "k must be >= 0, got " + str(fresnel.k));
         float sigma = sigma_degrees * kPi / 180;
         inv_two_sigma2_ = 1 / (2 * sigma * sigma);
         // norm = 2π ∫_0^{π/2} exp(-θ²/(2σ²)) cos θ sin θ dθ by composite Simpson (2048 intervals).

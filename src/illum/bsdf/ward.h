@@ -23,9 +23,9 @@ public:
         ILLUM_REQUIRE(in_range(rho_d, 0, 1), "ward", "rho_d must be in [0, 1], got " + str(rho_d));
         ILLUM_REQUIRE(in_range(rho_s, 0, 1), "ward", "rho_s must be in [0, 1], got " + str(rho_s));
         ILLUM_REQUIRE(in_range(rho_d + rho_s, 0, 1), "ward",
-                "rho_d + rho_s must be <= 1, got " + str(rho_d + rho_s));
+                      "rho_d + rho_s must be <= 1, got " + str(rho_d + rho_s));
         ILLUM_REQUIRE(in_range(alpha_x, 1e-3f, 1) && in_range(alpha_y, 1e-3f, 1), "ward",
-                "alpha must be in [0.001, 1], got " + str(alpha_x) + ", " + str(alpha_y));
+                      "alpha must be in [0.001, 1], got " + str(alpha_x) + ", " + str(alpha_y));
         p_spec_ = specular_lobe_probability(rho_d, rho_s);
     }
     std::uint8_t flags() const override { return kDiffuseReflection | kGlossyReflection; }

@@ -50,8 +50,8 @@ Ray PerspectiveCamera::generate_ray(Point2f p, Point2f u_lens) const {
     return {world_from_camera_(r.o), normalize(world_from_camera_(r.d)), kInfinity};
 }
 
-OrthographicCamera::OrthographicCamera(const Transform& world_from_camera, int width, int height, float lens_radius,
-                                       float focal_distance, const Screen* screen)
+OrthographicCamera::OrthographicCamera(const Transform& world_from_camera, int width, int height,
+                                       float lens_radius, float focal_distance, const Screen* screen)
     : world_from_camera_(world_from_camera), lens_radius_(lens_radius), focal_distance_(focal_distance) {
     Screen s = screen ? *screen : PerspectiveCamera::default_screen(width, height);
     raster_to_screen(s, width, height, 1.0f, &ax_, &bx_, &ay_, &by_);

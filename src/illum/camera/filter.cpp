@@ -37,8 +37,10 @@ float GaussianFilter::sample_axis(float u, float r) const {
     for (int i = 0; i < 40; ++i) {
         double f = gaussian_cdf_unnormalised(x, r, sigma_) - target;
         if (std::abs(f) < 1e-9 * total) break;
-        if (f > 0) hi = x;
-        else lo = x;
+        if (f > 0)
+            hi = x;
+        else
+            lo = x;
         double df = gaussian(x, sigma_) - gaussian(r, sigma_);
         double xn = df > 0 ? x - f / df : 0.5 * (lo + hi);
         x = (xn > lo && xn < hi) ? xn : 0.5 * (lo + hi);

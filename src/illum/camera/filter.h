@@ -46,7 +46,9 @@ public:
     float evaluate(Vector2f p) const override {
         return std::max(0.0f, radius_.x - std::abs(p.x)) * std::max(0.0f, radius_.y - std::abs(p.y));
     }
-    FilterSample sample(Point2f u) const override { return {{sample_tent(u.x) * radius_.x, sample_tent(u.y) * radius_.y}, 1}; }
+    FilterSample sample(Point2f u) const override {
+        return {{sample_tent(u.x) * radius_.x, sample_tent(u.y) * radius_.y}, 1};
+    }
     // Inverse CDF of the unit tent on [-1, 1].
     static float sample_tent(float u) {
         if (u < 0.5f) return -1 + std::sqrt(2 * u);

@@ -34,7 +34,9 @@ void disk_intersect(const RTCIntersectFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
     auto* disk = static_cast<const DiskShape*>(args->geometryUserPtr);
     auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
-    Ray ray{{rh->ray.org_x, rh->ray.org_y, rh->ray.org_z}, {rh->ray.dir_x, rh->ray.dir_y, rh->ray.dir_z}, rh->ray.tfar};
+    Ray ray{{rh->ray.org_x, rh->ray.org_y, rh->ray.org_z},
+            {rh->ray.dir_x, rh->ray.dir_y, rh->ray.dir_z},
+            rh->ray.tfar};
     auto t = disk->intersect(ray);
     if (!t || *t <= rh->ray.tnear) return;
     rh->ray.tfar = *t;
@@ -79,7 +81,9 @@ RTCRay to_embree(const Ray& ray) {
 
 Accelerator::Accelerator() {
     device_ = rtcNewDevice(nullptr);
-    if (!device_) throw Error(fmt::format("cannot create an Embree device (error {})", int(rtcGetDeviceError(nullptr))));
+    if (!device_)
+        throw Error(
+            fmt::format("cannot create an Embree device (error {})", int(rtcGetDeviceError(nullptr))));
     rtcSetDeviceErrorFunction(device_, embree_error, nullptr);
     scene_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
@@ -133,8 +137,12 @@ void Accelerator::add_instance(std::uint32_t prototype, const Transform& world_f
     rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, xfm);
     for (float x : {proto.bounds.lo.x, proto.bounds.hi.x})
         for (float y : {proto.bounds.lo.y, proto.bounds.hi.y})
-            for (float z : {proto.bounds.lo.z, proto.bounds.hi.z}) bounds_.extend(world_from_instance(Point3f{x, y, z}));
-    Record r{Kind::Instance, nullptr, nullptr, nullptr, nullptr, {}, nullptr, prototype, world_from_instance};
+            for (float z : {proto.bounds.lo.z, proto.bounds.hi.z})
+                bounds_.extend(world_from_instance(Point3f{x, y, z}));
+    Record r;
+    r.kind = Kind::Instance;
+    r.prototype = prototype;
+    r.world_from_instance = world_from_instance;
     Prototype* saved = building_;
     building_ = nullptr; // instances live in the world scene
     attach(geom, std::move(r));
@@ -155,7 +163,8 @@ void Accelerator::alpha_filter(const RTCFilterFunctionNArguments* args) {
     auto v = m.vertices(tri);
     sh.p = barycentric(v[0], v[1], v[2], b0, b1, b2);
     if (!m.uv.empty()) {
-        Point2f t0 = m.uv[m.indices[3 * tri]], t1 = m.uv[m.indices[3 * tri + 1]], t2 = m.uv[m.indices[3 * tri + 2]];
+        Point2f t0 = m.uv[m.indices[3 * tri]], t1 = m.uv[m.indices[3 * tri + 1]],
+                t2 = m.uv[m.indices[3 * tri + 2]];
         sh.uv = {b0 * t0.x + b1 * t1.x + b2 * t2.x, b0 * t0.y + b1 * t1.y + b2 * t2.y};
     } else {
         sh.uv = {b1 + b2, b2}; // the default (0,0), (1,0), (1,1) parameterisation
@@ -188,8 +197,8 @@ std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Ma
         v[3 * i + 2] = mesh->p[i].z;
         (building_ ? building_->bounds : bounds_).extend(mesh->p[i]);
     }
-    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                               3 * sizeof(unsigned), mesh->triangle_count()));
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh->triangle_count()));
     std::copy(mesh->indices.begin(), mesh->indices.end(), idx);
     std::unique_ptr<AlphaCutout> cutout;
     if (alpha) {
@@ -198,7 +207,12 @@ std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Ma
         rtcSetGeometryIntersectFilterFunction(geom, alpha_filter);
         rtcSetGeometryOccludedFilterFunction(geom, alpha_filter);
     }
-    Record r{Kind::Mesh, std::move(mesh), nullptr, nullptr, material, std::move(lights), std::move(cutout)};
+    Record r;
+    r.kind = Kind::Mesh;
+    r.mesh = std::move(mesh);
+    r.material = material;
+    r.lights = std::move(lights);
+    r.cutout = std::move(cutout);
     return attach(geom, std::move(r));
 }
 
@@ -214,11 +228,16 @@ std::uint32_t Accelerator::add_sphere(std::unique_ptr<SphereShape> sphere, const
     (building_ ? building_->bounds : bounds_).extend(sphere->bounds());
     std::vector<const Light*> lights;
     if (light) lights.push_back(light);
-    Record r{Kind::Sphere, nullptr, std::move(sphere), nullptr, material, std::move(lights)};
+    Record r;
+    r.kind = Kind::Sphere;
+    r.sphere = std::move(sphere);
+    r.material = material;
+    r.lights = std::move(lights);
     return attach(geom, std::move(r));
 }
 
-std::uint32_t Accelerator::add_disk(std::unique_ptr<DiskShape> disk, const Material* material, const Light* light) {
+std::uint32_t Accelerator::add_disk(std::unique_ptr<DiskShape> disk, const Material* material,
+                                    const Light* light) {
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(geom, 1);
     rtcSetGeometryUserData(geom, disk.get());
@@ -228,7 +247,11 @@ std::uint32_t Accelerator::add_disk(std::unique_ptr<DiskShape> disk, const Mater
     (building_ ? building_->bounds : bounds_).extend(disk->bounds());
     std::vector<const Light*> lights;
     if (light) lights.push_back(light);
-    Record r{Kind::Disk, nullptr, nullptr, std::move(disk), material, std::move(lights)};
+    Record r;
+    r.kind = Kind::Disk;
+    r.disk = std::move(disk);
+    r.material = material;
+    r.lights = std::move(lights);
     return attach(geom, std::move(r));
 }
 
@@ -262,7 +285,8 @@ bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
     for (int r = 0; r < 3; ++r) {
         double e = gamma_bound(3) * std::abs(m(r, 3));
         for (int c = 0; c < 3; ++c)
-            e += std::abs(m(r, c)) * (gamma_bound(3) * std::abs(hit->p[c]) + (1 + gamma_bound(3)) * hit->p_error[c]);
+            e += std::abs(m(r, c)) *
+                 (gamma_bound(3) * std::abs(hit->p[c]) + (1 + gamma_bound(3)) * hit->p_error[c]);
         err[r] = float(e);
     }
     hit->p = w(hit->p);
@@ -277,10 +301,17 @@ bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
 void Accelerator::fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit) {
     float t = rh.ray.tfar;
     switch (rec.kind) {
-    case Kind::Mesh: rec.mesh->fill_hit(rh.hit.primID, rh.hit.u, rh.hit.v, t, ray, hit); break;
-    case Kind::Sphere: rec.sphere->fill_hit(t, ray, hit); break;
-    case Kind::Disk: rec.disk->fill_hit(t, ray, hit); break;
-    case Kind::Instance: break; // never hit itself: Embree reports the instanced geometry
+    case Kind::Mesh:
+        rec.mesh->fill_hit(rh.hit.primID, rh.hit.u, rh.hit.v, t, ray, hit);
+        break;
+    case Kind::Sphere:
+        rec.sphere->fill_hit(t, ray, hit);
+        break;
+    case Kind::Disk:
+        rec.disk->fill_hit(t, ray, hit);
+        break;
+    case Kind::Instance:
+        break; // never hit itself: Embree reports the instanced geometry
     }
     hit->geom_id = rh.hit.geomID;
     hit->prim_id = rh.hit.primID;

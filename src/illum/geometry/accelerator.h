@@ -31,7 +31,8 @@ public:
     // stochastic alpha test, deterministic per ray), so alpha 0 is a hole.
     std::uint32_t add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
                            std::vector<const Light*> lights, const FloatTexture* alpha = nullptr);
-    std::uint32_t add_sphere(std::unique_ptr<SphereShape> sphere, const Material* material, const Light* light);
+    std::uint32_t add_sphere(std::unique_ptr<SphereShape> sphere, const Material* material,
+                             const Light* light);
     std::uint32_t add_disk(std::unique_ptr<DiskShape> disk, const Material* material, const Light* light);
     // Object instancing (pbrt's ObjectBegin/ObjectInstance): between begin_prototype() and end_prototype()
     // the add_* calls build a prototype (an Embree scene of its own, in instance space); add_instance()
@@ -65,7 +66,7 @@ private:
         const FloatTexture* alpha;
     };
     struct Record {
-        Kind kind;
+        Kind kind = Kind::Mesh;
         std::unique_ptr<TriangleMesh> mesh;
         std::unique_ptr<SphereShape> sphere;
         std::unique_ptr<DiskShape> disk;

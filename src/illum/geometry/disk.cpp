@@ -54,7 +54,8 @@ ShapeSample DiskShape::sample_area(Point2f u) const {
     // Uniform over the annulus: r = sqrt(ri² + u (ro² - ri²)).
     Point2f d = sample_uniform_disk_concentric(u);
     float rho2 = d.x * d.x + d.y * d.y;
-    float r = std::sqrt(inner_radius_ * inner_radius_ + rho2 * (radius_ * radius_ - inner_radius_ * inner_radius_));
+    float r =
+        std::sqrt(inner_radius_ * inner_radius_ + rho2 * (radius_ * radius_ - inner_radius_ * inner_radius_));
     float scale = rho2 > 0 ? r / std::sqrt(rho2) : 0;
     Point3f po{d.x * scale, d.y * scale, height_};
     ShapeSample s;

@@ -10,7 +10,8 @@ namespace illum {
 
 class DiskShape final : public AreaShape {
 public:
-    DiskShape(const Transform& world_from_object, float height, float radius, float inner_radius, bool flip_normal);
+    DiskShape(const Transform& world_from_object, float height, float radius, float inner_radius,
+              bool flip_normal);
 
     float area() const override { return area_; }
     Bounds3f bounds() const override;

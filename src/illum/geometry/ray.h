@@ -37,8 +37,10 @@ inline Point3f offset_ray_origin(Point3f p, Vector3f p_error, Normal3f n, Vector
     Vector3f side = dot(w, n) < 0 ? -Vector3f(n) : Vector3f(n);
     Point3f po = p + side * d;
     for (int i = 0; i < 3; ++i) {
-        if (side[i] > 0) po[i] = next_float_up(po[i]);
-        else if (side[i] < 0) po[i] = next_float_down(po[i]);
+        if (side[i] > 0)
+            po[i] = next_float_up(po[i]);
+        else if (side[i] < 0)
+            po[i] = next_float_down(po[i]);
     }
     return po;
 }

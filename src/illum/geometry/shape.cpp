@@ -16,7 +16,8 @@ std::optional<ShapeSample> AreaShape::area_to_solid_angle(const ShapeSampleConte
     return s;
 }
 
-float AreaShape::area_pdf_to_solid_angle(float pdf_area, Point3f p_ref, Point3f p_hit, Normal3f n_hit, Vector3f wi) {
+float AreaShape::area_pdf_to_solid_angle(float pdf_area, Point3f p_ref, Point3f p_hit, Normal3f n_hit,
+                                         Vector3f wi) {
     float d2 = distance_squared(p_ref, p_hit);
     float cos_l = abs_dot(n_hit, wi);
     if (cos_l == 0) return 0;

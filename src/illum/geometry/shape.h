@@ -19,7 +19,7 @@ struct ShapeSampleContext {
 struct ShapeSample {
     Point3f p;
     Vector3f p_error;
-    Normal3f n;   // outward (emitting side) normal at p
+    Normal3f n; // outward (emitting side) normal at p
     Point2f uv;
     float pdf = 0; // per steradian for sample(), per square metre for sample_area()
 };
@@ -40,7 +40,8 @@ public:
 protected:
     // Converts an area sample to a solid-angle one as seen from ctx (pdf_ω = pdf_A r² / |cos θ_l|).
     static std::optional<ShapeSample> area_to_solid_angle(const ShapeSampleContext& ctx, ShapeSample s);
-    static float area_pdf_to_solid_angle(float pdf_area, Point3f p_ref, Point3f p_hit, Normal3f n_hit, Vector3f wi);
+    static float area_pdf_to_solid_angle(float pdf_area, Point3f p_ref, Point3f p_hit, Normal3f n_hit,
+                                         Vector3f wi);
 };
 
 } // namespace illum

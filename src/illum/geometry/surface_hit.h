@@ -16,9 +16,9 @@ struct SurfaceHit {
     Point3f p;
     Vector3f p_error;
     float t = 0;
-    Vector3f wo;  // towards the ray origin, normalised
-    Normal3f n;   // geometric normal, on the side the shape's orientation says is outside
-    Normal3f ns;  // shading normal, on the same side as n
+    Vector3f wo;   // towards the ray origin, normalised
+    Normal3f n;    // geometric normal, on the side the shape's orientation says is outside
+    Normal3f ns;   // shading normal, on the same side as n
     Vector3f dpdu; // tangent along u (for anisotropic models), may be zero
     Point2f uv;
     const Material* material = nullptr;

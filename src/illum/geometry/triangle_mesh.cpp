@@ -33,13 +33,15 @@ void TriangleMesh::finalize() {
     }
 }
 
-void TriangleMesh::fill_hit(std::uint32_t tri, float b1, float b2, float t, const Ray& ray, SurfaceHit* hit) const {
+void TriangleMesh::fill_hit(std::uint32_t tri, float b1, float b2, float t, const Ray& ray,
+                            SurfaceHit* hit) const {
     float b0 = 1 - b1 - b2;
     std::uint32_t i0 = indices[3 * tri], i1 = indices[3 * tri + 1], i2 = indices[3 * tri + 2];
     Point3f p0 = p[i0], p1 = p[i1], p2 = p[i2];
     hit->p = barycentric(p0, p1, p2, b0, b1, b2);
     // Error of the barycentric interpolation: γ_7 Σ |b_i p_i| (PBR 4th ed., §6.8.5).
-    hit->p_error = (abs(Vector3f(p0) * b0) + abs(Vector3f(p1) * b1) + abs(Vector3f(p2) * b2)) * gamma_bound(7);
+    hit->p_error =
+        (abs(Vector3f(p0) * b0) + abs(Vector3f(p1) * b1) + abs(Vector3f(p2) * b2)) * gamma_bound(7);
     hit->t = t;
     hit->wo = normalize(-ray.d);
     hit->n = face_normals[tri];
@@ -87,7 +89,8 @@ ShapeSample TriangleShape::at_barycentrics(float b0, float b1, float b2) const {
     auto v = mesh_->vertices(index_);
     ShapeSample s;
     s.p = barycentric(v[0], v[1], v[2], b0, b1, b2);
-    s.p_error = (abs(Vector3f(v[0]) * b0) + abs(Vector3f(v[1]) * b1) + abs(Vector3f(v[2]) * b2)) * gamma_bound(6);
+    s.p_error =
+        (abs(Vector3f(v[0]) * b0) + abs(Vector3f(v[1]) * b1) + abs(Vector3f(v[2]) * b2)) * gamma_bound(6);
     s.n = mesh_->geometric_normal(index_);
     Point2f uv0{0, 0}, uv1{1, 0}, uv2{1, 1};
     if (!mesh_->uv.empty()) {
@@ -105,7 +108,6 @@ ShapeSample TriangleShape::sample_area(Point2f u) const {
     s.pdf = 1 / area_;
     return s;
 }
-
 
 bool TriangleShape::use_spherical_sampling(Point3f p) const {
     // A cheap planar estimate of the solid angle, Ω ≈ A |cos θ| / d² at the centroid, decides the strategy

@@ -12,9 +12,9 @@
 namespace illum {
 
 struct TriangleMesh {
-    std::vector<Point3f> p;  // world space
-    std::vector<Normal3f> n; // per vertex, world space; empty when the mesh gives none
-    std::vector<Point2f> uv; // per vertex; empty when none
+    std::vector<Point3f> p;             // world space
+    std::vector<Normal3f> n;            // per vertex, world space; empty when the mesh gives none
+    std::vector<Point2f> uv;            // per vertex; empty when none
     std::vector<std::uint32_t> indices; // three per triangle
     // pbrt-v4: the geometric normal is normalize(cross(p0 - p2, p1 - p2)), turned to the side of the
     // shading normals when the mesh has them, else flipped by ReverseOrientation xor a transform that

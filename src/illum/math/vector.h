@@ -116,8 +116,12 @@ inline Vector3f abs(Vector3f v) { return {std::abs(v.x), std::abs(v.y), std::abs
 inline Vector3f abs(Point3f p) { return {std::abs(p.x), std::abs(p.y), std::abs(p.z)}; }
 inline float max_component(Vector3f v) { return std::max({v.x, v.y, v.z}); }
 inline int max_dimension(Vector3f v) { return (v.x > v.y) ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2); }
-inline Point3f min(Point3f a, Point3f b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
-inline Point3f max(Point3f a, Point3f b) { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
+inline Point3f min(Point3f a, Point3f b) {
+    return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
+}
+inline Point3f max(Point3f a, Point3f b) {
+    return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
+}
 
 // Turns n to the hemisphere of v.
 inline Normal3f face_forward(Normal3f n, Vector3f v) { return dot(n, v) < 0 ? -n : n; }
@@ -135,8 +139,8 @@ inline bool is_finite(Point3f p) { return std::isfinite(p.x) && std::isfinite(p.
 
 // Spherical coordinates in the local frame (z up): θ from +z, φ from +x towards +y.
 inline Vector3f spherical_direction(float sin_theta, float cos_theta, float phi) {
-    return {std::clamp(sin_theta, -1.0f, 1.0f) * std::cos(phi), std::clamp(sin_theta, -1.0f, 1.0f) * std::sin(phi),
-            std::clamp(cos_theta, -1.0f, 1.0f)};
+    return {std::clamp(sin_theta, -1.0f, 1.0f) * std::cos(phi),
+            std::clamp(sin_theta, -1.0f, 1.0f) * std::sin(phi), std::clamp(cos_theta, -1.0f, 1.0f)};
 }
 inline float spherical_theta(Vector3f v) { return std::acos(std::clamp(v.z, -1.0f, 1.0f)); }
 inline float spherical_phi(Vector3f v) {

@@ -52,8 +52,10 @@ struct ScalarOf<0, 0, 0> {
 };
 template <int W, int M, int S>
 constexpr auto make_scalar(float v) {
-    if constexpr (W == 0 && M == 0 && S == 0) return v;
-    else return Scalar<W, M, S>(v);
+    if constexpr (W == 0 && M == 0 && S == 0)
+        return v;
+    else
+        return Scalar<W, M, S>(v);
 }
 } // namespace detail
 
@@ -97,8 +99,10 @@ struct Quantity3 {
 namespace detail {
 template <int W, int M, int S>
 constexpr auto make_quantity3(Color3 c) {
-    if constexpr (W == 0 && M == 0 && S == 0) return c;
-    else return Quantity3<W, M, S>(c);
+    if constexpr (W == 0 && M == 0 && S == 0)
+        return c;
+    else
+        return Quantity3<W, M, S>(c);
 }
 } // namespace detail
 
@@ -141,19 +145,19 @@ constexpr auto operator*(Color3 a, Scalar<W, M, S, T> b) {
 }
 
 // Scalars.
-using SolidAngle = Scalar<0, 0, 1>;            // [sr]
-using Area = Scalar<0, 2, 0>;                  // [m^2]
-using SolidAnglePdf = Scalar<0, 0, -1>;        // probability per steradian [sr^-1]
-using AreaPdf = Scalar<0, -2, 0, AreaPdfTag>;  // probability per square metre [m^-2]
+using SolidAngle = Scalar<0, 0, 1>;           // [sr]
+using Area = Scalar<0, 2, 0>;                 // [m^2]
+using SolidAnglePdf = Scalar<0, 0, -1>;       // probability per steradian [sr^-1]
+using AreaPdf = Scalar<0, -2, 0, AreaPdfTag>; // probability per square metre [m^-2]
 
 // RGB quantities.
-using Power3 = Quantity3<1, 0, 0>;                       // radiant flux [W]
-using Intensity3 = Quantity3<1, 0, -1>;                  // radiant intensity [W sr^-1]
-using Irradiance3 = Quantity3<1, -2, 0>;                 // irradiance = radiosity = exitance [W m^-2]
+using Power3 = Quantity3<1, 0, 0>;       // radiant flux [W]
+using Intensity3 = Quantity3<1, 0, -1>;  // radiant intensity [W sr^-1]
+using Irradiance3 = Quantity3<1, -2, 0>; // irradiance = radiosity = exitance [W m^-2]
 using Radiosity3 = Irradiance3;
-using Radiance3 = Quantity3<1, -2, -1>;                  // [W m^-2 sr^-1]
-using Biradiance3 = Quantity3<1, -2, 0, BiradianceTag>;  // intensity / r^2, before the cosine [W m^-2]
-using Bsdf3 = Quantity3<0, 0, -1>;                       // BSDF value [sr^-1]
+using Radiance3 = Quantity3<1, -2, -1>;                 // [W m^-2 sr^-1]
+using Biradiance3 = Quantity3<1, -2, 0, BiradianceTag>; // intensity / r^2, before the cosine [W m^-2]
+using Bsdf3 = Quantity3<0, 0, -1>;                      // BSDF value [sr^-1]
 
 // Conversions the physics does, by name.
 
@@ -178,6 +182,8 @@ constexpr Irradiance3 irradiance(Radiance3 l, SolidAngle w, float cos_theta) {
     return Irradiance3(l.rgb * w.value * cos_theta);
 }
 // The exitance of a Lambertian emitter of radiance L: M = π L; its power over an area A: Φ = π A L.
-constexpr Irradiance3 lambertian_exitance(Radiance3 l) { return Irradiance3(l.rgb * 3.14159265358979323846f); }
+constexpr Irradiance3 lambertian_exitance(Radiance3 l) {
+    return Irradiance3(l.rgb * 3.14159265358979323846f);
+}
 
 } // namespace illum

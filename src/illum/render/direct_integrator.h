@@ -12,11 +12,14 @@ namespace illum {
 class DirectIntegrator final : public Integrator {
 public:
     DirectIntegrator(const Scene& scene, int max_depth) : Integrator(scene), max_depth_(max_depth) {}
-    Color3 estimate(const Ray& camera_ray, ThreadContext& tc) const override { return radiance(camera_ray, tc).rgb; }
+    Color3 estimate(const Ray& camera_ray, ThreadContext& tc) const override {
+        return radiance(camera_ray, tc).rgb;
+    }
     Radiance3 radiance(Ray ray, ThreadContext& tc) const;
 
 private:
-    Radiance3 reflected_from(const Light& light, const SurfaceHit& hit, const BSDF& bsdf, ThreadContext& tc) const;
+    Radiance3 reflected_from(const Light& light, const SurfaceHit& hit, const BSDF& bsdf,
+                             ThreadContext& tc) const;
     int max_depth_;
 };
 

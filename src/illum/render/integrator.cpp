@@ -9,10 +9,11 @@
 namespace illum {
 
 bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, ThreadContext& tc) const {
-    Ray shadow = ls.at_infinity ? hit.spawn_ray(ls.wi)
-                 : (ls.n_light == Normal3f{} ? hit.spawn_ray_to(ls.p_light)
-                                              : spawn_ray_to(hit.p, hit.p_error, hit.n, ls.p_light,
-                                                             ls.p_light_error, ls.n_light));
+    Ray shadow = ls.at_infinity
+                     ? hit.spawn_ray(ls.wi)
+                     : (ls.n_light == Normal3f{} ? hit.spawn_ray_to(ls.p_light)
+                                                 : spawn_ray_to(hit.p, hit.p_error, hit.n, ls.p_light,
+                                                                ls.p_light_error, ls.n_light));
     return !occluded(shadow, tc);
 }
 

@@ -46,8 +46,8 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
 
         BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.arena) : BSDF();
         if (!bsdf) {
-            // A pure interface (no material): the path continues straight through, no scattering event. Like a
-            // specular bounce, emission found beyond it is counted in full: next-event estimation from the
+            // A pure interface (no material): the path continues straight through, no scattering event. Like
+            // a specular bounce, emission found beyond it is counted in full: next-event estimation from the
             // previous vertex was blocked by the interface, so it did not find that light.
             specular_bounce = true;
             ray = hit.spawn_ray(ray.d);

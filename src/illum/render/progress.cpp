@@ -23,8 +23,8 @@ std::string format_rate(double r) {
 } // namespace
 
 Progress::Progress(std::string label, std::uint64_t total, std::string unit, bool quiet)
-    : label_(std::move(label)), unit_(std::move(unit)), total_(total), quiet_(quiet), tty_(isatty(STDERR_FILENO)),
-      start_(std::chrono::steady_clock::now()) {}
+    : label_(std::move(label)), unit_(std::move(unit)), total_(total), quiet_(quiet),
+      tty_(isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()) {}
 
 Progress::~Progress() { finish(); }
 
@@ -36,7 +36,8 @@ void Progress::add(std::uint64_t done) {
     done_ += done;
     if (quiet_) return;
     std::int64_t now =
-        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start_).count();
+        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start_)
+            .count();
     std::int64_t interval = tty_ ? 100'000'000 : 5'000'000'000;
     if (now - last_print_ns_.load(std::memory_order_relaxed) < interval) return;
     std::unique_lock lock(mutex_, std::try_to_lock);
@@ -61,8 +62,8 @@ void Progress::print(bool final) {
     frac = std::min(1.0, std::max(0.0, frac));
     double rate = t > 0 ? done / t : 0;
     double eta = frac > 0 ? t * (1 - frac) / frac : -1;
-    std::string stats = fmt::format("{:5.1f}% {} {}/s, {} elapsed, ETA {}", 100 * frac, format_rate(rate), unit_,
-                                    format_duration(t), final ? "0s" : format_duration(eta));
+    std::string stats = fmt::format("{:5.1f}% {} {}/s, {} elapsed, ETA {}", 100 * frac, format_rate(rate),
+                                    unit_, format_duration(t), final ? "0s" : format_duration(eta));
     if (tty_) {
         constexpr int width = 30;
         int filled = int(frac * width);

@@ -28,7 +28,8 @@ RayRate measure_incoherent_rays(const Scene& scene, std::uint64_t count, int thr
     auto start = std::chrono::steady_clock::now();
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096), [&](const auto& range) {
-            for (std::size_t i = range.begin(); i != range.end(); ++i) t[i] = scene.accelerator.intersect_distance(rays[i]);
+            for (std::size_t i = range.begin(); i != range.end(); ++i)
+                t[i] = scene.accelerator.intersect_distance(rays[i]);
         });
     });
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

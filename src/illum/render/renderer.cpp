@@ -23,7 +23,8 @@ struct Tile {
 std::vector<Tile> make_tiles(int w, int h, int size) {
     std::vector<Tile> tiles;
     for (int y = 0; y < h; y += size)
-        for (int x = 0; x < w; x += size) tiles.push_back({x, y, std::min(x + size, w), std::min(y + size, h)});
+        for (int x = 0; x < w; x += size)
+            tiles.push_back({x, y, std::min(x + size, w), std::min(y + size, h)});
     return tiles;
 }
 
@@ -32,7 +33,8 @@ std::vector<Tile> make_tiles(int w, int h, int size) {
 RenderResult render(const Scene& scene, const Integrator& integrator, const RenderOptions& options) {
     if (options.spp <= 0 && options.time_budget <= 0) throw Error("samples per pixel must be positive");
     const int w = scene.width, h = scene.height;
-    int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    int threads =
+        options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
     tbb::task_arena arena(threads);
 

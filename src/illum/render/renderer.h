@@ -28,7 +28,8 @@ struct RenderResult {
     int spp = 0; // samples per pixel actually taken
     std::uint64_t samples = 0;
     std::uint64_t rays = 0;
-    std::uint64_t nonfinite_samples = 0; // NaN/Inf (or negative radiance) estimates: dropped, counted, never written
+    std::uint64_t nonfinite_samples =
+        0; // NaN/Inf (or negative radiance) estimates: dropped, counted, never written
     int threads = 0;
 };
 

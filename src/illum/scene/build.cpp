@@ -482,8 +482,7 @@ private:
             p->used = true;
             if (!r && (p->type != ParamType::Float || alpha(m.params.get_float(p->name, 0)) > 2e-3f)) r = p;
         }
-        if (r)
-            unsupported(r->loc, fmt::format("a rough coat (\"{}\") is rendered smooth", r->name));
+        if (r) unsupported(r->loc, fmt::format("a rough coat (\"{}\") is rendered smooth", r->name));
         if (m.params.has("albedo")) {
             const Param* a = m.params.find("albedo");
             Color3 al = a->type == ParamType::RGB ? *m.params.get_rgb("albedo")
@@ -513,7 +512,8 @@ private:
                 break;
             case ParamType::RGB:
                 if (p.numbers.size() == 3)
-                    values[p.name] = number(p.numbers[0]) + "," + number(p.numbers[1]) + "," + number(p.numbers[2]);
+                    values[p.name] =
+                        number(p.numbers[0]) + "," + number(p.numbers[1]) + "," + number(p.numbers[2]);
                 break;
             case ParamType::String:
                 if (p.strings.size() == 1) values[p.name] = p.strings[0];
@@ -521,13 +521,16 @@ private:
             case ParamType::Bool:
                 if (p.bools.size() == 1) values[p.name] = p.bools[0] ? "true" : "false";
                 break;
-            case ParamType::Texture: textured[p.name] = &p; continue;
+            case ParamType::Texture:
+                textured[p.name] = &p;
+                continue;
             default:
-                m.params.fail(p, fmt::format("material \"{}\": parameter \"{}\" cannot be of type {}", spec.name,
-                                             p.name, to_string(p.type)));
+                m.params.fail(p, fmt::format("material \"{}\": parameter \"{}\" cannot be of type {}",
+                                             spec.name, p.name, to_string(p.type)));
             }
             if (!values.count(p.name))
-                m.params.fail(p, fmt::format("parameter \"{}\" of material \"{}\" needs one value", p.name, spec.name));
+                m.params.fail(
+                    p, fmt::format("parameter \"{}\" of material \"{}\" needs one value", p.name, spec.name));
         }
         ParamValues resolved;
         std::unique_ptr<BxDF> bxdf;
@@ -547,14 +550,19 @@ private:
             throw Error(m.loc, fmt::format("material \"{}\" cannot have textured parameters", spec.name));
         std::vector<ShadingArgs::Value> args;
         for (const ParamSpec& ps : spec.params) {
-            ShadingArgs::Value v{ps.name, ps.kind, {}, {}, nullptr, nullptr, float(ps.min), float(ps.max), -1};
+            ShadingArgs::Value v{ps.name,       ps.kind,       {}, {}, nullptr, nullptr,
+                                 float(ps.min), float(ps.max), -1};
             for (std::size_t g = 0; g < spec.unit_sums.size(); ++g)
                 for (const std::string& name : spec.unit_sums[g])
                     if (name == ps.name) v.unit_sum_group = int(g);
             if (auto t = textured.find(ps.name); t != textured.end()) {
-                if (ps.kind == ParamKind::Rgb) v.color = color_param(m, ps.name, std::nullopt);
-                else if (ps.kind == ParamKind::Scalar) v.scalar = float_param(m, ps.name, std::nullopt);
-                else m.params.fail(*t->second, fmt::format("parameter \"{}\" of \"{}\" cannot be a texture", ps.name, spec.name));
+                if (ps.kind == ParamKind::Rgb)
+                    v.color = color_param(m, ps.name, std::nullopt);
+                else if (ps.kind == ParamKind::Scalar)
+                    v.scalar = float_param(m, ps.name, std::nullopt);
+                else
+                    m.params.fail(*t->second, fmt::format("parameter \"{}\" of \"{}\" cannot be a texture",
+                                                          ps.name, spec.name));
                 textured.erase(t);
             } else if (!resolved.has(ps.name)) {
                 continue; // an optional parameter not given
@@ -568,8 +576,8 @@ private:
             args.push_back(std::move(v));
         }
         if (!textured.empty())
-            m.params.fail(*textured.begin()->second,
-                          fmt::format("material \"{}\" has no parameter \"{}\"", spec.name, textured.begin()->first));
+            m.params.fail(*textured.begin()->second, fmt::format("material \"{}\" has no parameter \"{}\"",
+                                                                 spec.name, textured.begin()->first));
         return own(std::make_unique<TexturedModelMaterial>(spec, std::move(args), albedo));
     }
 
@@ -709,7 +717,8 @@ private:
                 tri_lights.push_back(scene_->lights.back().get());
             }
         }
-        scene_->accelerator.add_mesh(std::move(mesh), resolve(s.material, s.loc), std::move(tri_lights), alpha_of(s));
+        scene_->accelerator.add_mesh(std::move(mesh), resolve(s.material, s.loc), std::move(tri_lights),
+                                     alpha_of(s));
     }
 
     // pbrt-v4's "alpha" of a shape, a float or a float texture; nullptr when the shape is opaque.

@@ -6,8 +6,8 @@
 namespace illum {
 
 namespace {
-const char* kTypeNames[] = {"float",   "integer", "bool",   "string",  "rgb",    "spectrum",
-                            "point2",  "point3",  "vector3", "normal", "texture"};
+const char* kTypeNames[] = {"float",  "integer", "bool",    "string", "rgb",    "spectrum",
+                            "point2", "point3",  "vector3", "normal", "texture"};
 }
 
 const char* to_string(ParamType t) { return kTypeNames[int(t)]; }
@@ -54,14 +54,17 @@ const Param* ParamSet::lookup(const std::string& name, std::initializer_list<Par
 
 namespace {
 void expect_count(const ParamSet& ps, const Param& p, size_t n) {
-    size_t have = p.type == ParamType::Bool ? p.bools.size()
+    size_t have = p.type == ParamType::Bool                                       ? p.bools.size()
                   : (p.type == ParamType::String || p.type == ParamType::Texture) ? p.strings.size()
                                                                                   : p.numbers.size();
-    if (have != n) ps.fail(p, fmt::format("parameter \"{}\" needs {} value{}, has {}", p.name, n, n == 1 ? "" : "s", have));
+    if (have != n)
+        ps.fail(p,
+                fmt::format("parameter \"{}\" needs {} value{}, has {}", p.name, n, n == 1 ? "" : "s", have));
 }
 void expect_multiple(const ParamSet& ps, const Param& p, size_t k) {
     if (p.numbers.size() % k != 0)
-        ps.fail(p, fmt::format("parameter \"{}\" needs a multiple of {} values, has {}", p.name, k, p.numbers.size()));
+        ps.fail(p, fmt::format("parameter \"{}\" needs a multiple of {} values, has {}", p.name, k,
+                               p.numbers.size()));
 }
 float finite_float(const ParamSet& ps, const Param& p, double v) {
     if (!std::isfinite(v)) ps.fail(p, fmt::format("parameter \"{}\" is not a finite number", p.name));

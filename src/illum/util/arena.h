@@ -14,8 +14,7 @@ namespace illum {
 
 class ScratchArena {
 public:
-    explicit ScratchArena(std::size_t bytes = 64 * 1024)
-        : storage_(new std::byte[bytes]), capacity_(bytes) {}
+    explicit ScratchArena(std::size_t bytes = 64 * 1024) : storage_(new std::byte[bytes]), capacity_(bytes) {}
 
     // Objects placed in the arena must be trivially destructible or have their destructor run by
     // the caller: reset() does not call destructors.
