@@ -12,6 +12,7 @@
 #pragma once
 
 #include "illum/bsdf/glossy_diffuse_sampling.h"
+#include "illum/bsdf/vcavity.h"
 
 #include "illum/bsdf/common.h"
 #include "illum/bsdf/fresnel.h"
@@ -58,16 +59,7 @@ public:
     }
 
     Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode) const override {
-        if (!same_hemisphere(wo, wi)) return {};
-        float co = std::abs(wo.z), ci = std::abs(wi.z);
-        Vector3f h = wo + wi;
-        if (co == 0 || ci == 0 || length_squared(h) == 0) return {};
-        h = normalize(h);
-        if (h.z < 0) h = -h;
-        Vector3f wof = wo.z < 0 ? -wo : wo, wif = wo.z < 0 ? -wi : wi;
-        Color3 F = fresnel_(dot(wof, h));
-        float spec = D(h) * vcavity_G(wof, wif, h) / (4 * co * ci);
-        return Bsdf3(kd_ * kInvPi + ks_ * F * spec);
+        return vcavity_microfacet_f(wo, wi, kd_, ks_, fresnel_, [this](Vector3f h) { return D(h); });
     }
 
     std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override {

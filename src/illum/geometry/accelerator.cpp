@@ -216,6 +216,15 @@ std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Ma
     return attach(geom, std::move(r));
 }
 
+Accelerator::Record Accelerator::single_shape_record(Kind kind, const Material* material,
+                                                     const Light* light) {
+    Record r;
+    r.kind = kind;
+    r.material = material;
+    if (light) r.lights.push_back(light);
+    return r;
+}
+
 std::uint32_t Accelerator::add_sphere(std::unique_ptr<SphereShape> sphere, const Material* material,
                                       const Light* light) {
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
@@ -226,13 +235,8 @@ std::uint32_t Accelerator::add_sphere(std::unique_ptr<SphereShape> sphere, const
     v[2] = sphere->center().z;
     v[3] = sphere->radius();
     (building_ ? building_->bounds : bounds_).extend(sphere->bounds());
-    std::vector<const Light*> lights;
-    if (light) lights.push_back(light);
-    Record r;
-    r.kind = Kind::Sphere;
+    Record r = single_shape_record(Kind::Sphere, material, light);
     r.sphere = std::move(sphere);
-    r.material = material;
-    r.lights = std::move(lights);
     return attach(geom, std::move(r));
 }
 
@@ -245,13 +249,8 @@ std::uint32_t Accelerator::add_disk(std::unique_ptr<DiskShape> disk, const Mater
     rtcSetGeometryIntersectFunction(geom, disk_intersect);
     rtcSetGeometryOccludedFunction(geom, disk_occluded);
     (building_ ? building_->bounds : bounds_).extend(disk->bounds());
-    std::vector<const Light*> lights;
-    if (light) lights.push_back(light);
-    Record r;
-    r.kind = Kind::Disk;
+    Record r = single_shape_record(Kind::Disk, material, light);
     r.disk = std::move(disk);
-    r.material = material;
-    r.lights = std::move(lights);
     return attach(geom, std::move(r));
 }
 

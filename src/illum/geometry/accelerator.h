@@ -84,6 +84,8 @@ private:
     // Fills the hit of an Embree hit on the geometry of `rec` along `ray` (in that geometry's space).
     static void fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit);
     static void alpha_filter(const RTCFilterFunctionNArguments* args);
+    // A sphere's or disk's record: one primitive, so at most one area light.
+    static Record single_shape_record(Kind kind, const Material* material, const Light* light);
     std::uint32_t attach(RTCGeometry geom, Record record);
 
     RTCDevice device_ = nullptr;
