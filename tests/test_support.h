@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fmt/format.h>
 #include <string>
 
 #include "illum/image/image.h"
@@ -39,6 +40,24 @@ inline RenderResult render_pbrt(const std::string& text, const RenderSetup& setu
     opt.sampler = setup.sampler;
     opt.quiet = true;
     return render(*scene, *integrator, opt);
+}
+
+// An irradiance receiver: a white (ρ = 1) Lambertian plane z = 0 seen in a tiny orthographic window around
+// the origin from the side, so every pixel shows E(origin)/π for the light that `world` adds (depth 1).
+inline std::string irradiance_receiver(const std::string& world, const std::string& integrator = "direct",
+                                       int resolution = 16) {
+    return fmt::format(R"(
+Integrator "{}" "integer maxdepth" [1]
+LookAt 0.5 0 0.05  0 0 0  0 0 1
+Camera "orthographic" "float screenwindow" [-0.00002 0.00002 -0.00002 0.00002]
+Film "rgb" "integer xresolution" [{}] "integer yresolution" [{}]
+PixelFilter "box"
+WorldBegin
+Material "diffuse" "rgb reflectance" [1 1 1]
+Shape "trianglemesh" "point3 P" [-10 -10 0 10 -10 0 10 10 0 -10 10 0] "integer indices" [0 1 2 0 2 3]
+{}
+)",
+                       integrator, resolution, resolution, world);
 }
 
 // Mean of one channel over the pixels and its standard error, treating pixels as independent

@@ -16,23 +16,6 @@ using test::RenderSetup;
 
 constexpr double kSigmas = 4.5; // ~7e-6 two-sided false-alarm rate per check
 
-// A receiver: a white (ρ = 1) Lambertian plane z = 0, seen by a tiny orthographic window around the
-// origin from the side, so every pixel shows (1/π) E(origin).
-std::string receiver(const std::string& world, int res = 16, const std::string& integrator = "direct") {
-    return fmt::format(R"(
-Integrator "{}" "integer maxdepth" [1]
-LookAt 0.5 0 0.05  0 0 0  0 0 1
-Camera "orthographic" "float screenwindow" [-0.00002 0.00002 -0.00002 0.00002]
-Film "rgb" "integer xresolution" [{}] "integer yresolution" [{}]
-PixelFilter "box"
-WorldBegin
-Material "diffuse" "rgb reflectance" [1 1 1]
-Shape "trianglemesh" "point3 P" [-10 -10 0 10 -10 0 10 10 0 -10 10 0] "integer indices" [0 1 2 0 2 3]
-{}
-)",
-                       integrator, res, res, world);
-}
-
 // A disk emitter of radiance L and radius r at height h, facing down, with a black material.
 std::string disk_light(double r, double h, double L) {
     return fmt::format(R"(
@@ -69,7 +52,7 @@ TEST(Radiometry, DiskIrradianceOnAxis) {
             RenderSetup s;
             s.integrator = integrator;
             s.spp = 16;
-            auto res = render_pbrt(receiver(disk_light(r, h, L), 16, integrator), s);
+            auto res = render_pbrt(test::irradiance_receiver(disk_light(r, h, L), integrator), s);
             expect_radiance(res, expected, fmt::format("{} r={} h={}", integrator, r, h).c_str());
         }
     }
@@ -81,11 +64,11 @@ TEST(Radiometry, RuleOfFive) {
     const double L = 1.0, r = 0.2;
     for (double h : {5 * r, 10 * r, 1 * r}) {
         double intensity = L * kPiD * r * r;
-        auto point = render_pbrt(
-            receiver(fmt::format(R"(LightSource "point" "point3 from" [0 0 {}] "rgb I" [{} {} {}])", h,
-                                 intensity, intensity, intensity)),
-            {});
-        auto disk = render_pbrt(receiver(disk_light(r, h, L)), {});
+        auto point = render_pbrt(test::irradiance_receiver(fmt::format(
+                                     R"(LightSource "point" "point3 from" [0 0 {}] "rgb I" [{} {} {}])", h,
+                                     intensity, intensity, intensity)),
+                                 {});
+        auto disk = render_pbrt(test::irradiance_receiver(disk_light(r, h, L)), {});
         double e_point = point.image.channel_mean().g, e_disk = pixel_mean(disk.image, 1).mean;
         EXPECT_NEAR(e_point, intensity / (h * h) / kPiD, 1e-5 * e_point) << "a point source is exact";
         double ratio = e_disk / e_point, expected_ratio = h * h / (r * r + h * h);
@@ -117,7 +100,7 @@ AttributeEnd
         for (const char* integrator : {"direct", "path"}) {
             RenderSetup s;
             s.integrator = integrator;
-            auto res = render_pbrt(receiver(world, 16, integrator), s);
+            auto res = render_pbrt(test::irradiance_receiver(world, integrator), s);
             expect_radiance(res, L * (R / d) * (R / d), fmt::format("{} R={} d={}", integrator, R, d).c_str(),
                             1e-4);
         }
@@ -158,7 +141,7 @@ AttributeEnd
         for (const char* integrator : {"direct", "path"}) {
             RenderSetup s;
             s.integrator = integrator;
-            auto res = render_pbrt(receiver(world, 16, integrator), s);
+            auto res = render_pbrt(test::irradiance_receiver(world, integrator), s);
             expect_radiance(res, e / kPiD, fmt::format("{} a={} h={}", integrator, a, h).c_str(), 1e-4);
         }
     }

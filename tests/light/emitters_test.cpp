@@ -181,21 +181,8 @@ TEST(SampleLe, ImageEnvironment) {
 
 // ---- scene-level lights through the pbrt-v4 parser and the light factory ----
 
-// A white Lambertian plane z = 0 seen by a tiny orthographic window at the origin: radiance E / π.
-std::string receiver(const std::string& world) {
-    return fmt::format(R"(
-Integrator "path" "integer maxdepth" [1]
-LookAt 0.5 0 0.05  0 0 0  0 0 1
-Camera "orthographic" "float screenwindow" [-0.00002 0.00002 -0.00002 0.00002]
-Film "rgb" "integer xresolution" [8] "integer yresolution" [8]
-PixelFilter "box"
-WorldBegin
-Material "diffuse" "rgb reflectance" [1 1 1]
-Shape "trianglemesh" "point3 P" [-10 -10 0 10 -10 0 10 10 0 -10 10 0] "integer indices" [0 1 2 0 2 3]
-{}
-)",
-                       world);
-}
+// The receiver (test_support.h) rendered with the path tracer at 8 x 8: every pixel shows E / π.
+std::string receiver(const std::string& world) { return test::irradiance_receiver(world, "path", 8); }
 
 void expect_mean(const RenderResult& r, double expected, const std::string& what, double rel = 1e-4) {
     for (int c = 0; c < 3; ++c) {

@@ -64,15 +64,7 @@ TEST(Alpha, CheckerboardAlphaIsHoles) {
 // unoccluded irradiance.
 TEST(Alpha, ShadowRaysPassThroughCutOuts) {
     auto scene = [](const std::string& alpha) {
-        return fmt::format(R"(
-Integrator "direct" "integer maxdepth" [1]
-LookAt 0.5 0 0.05  0 0 0  0 0 1
-Camera "orthographic" "float screenwindow" [-0.00002 0.00002 -0.00002 0.00002]
-Film "rgb" "integer xresolution" [16] "integer yresolution" [16]
-PixelFilter "box"
-WorldBegin
-Material "diffuse" "rgb reflectance" [1 1 1]
-Shape "trianglemesh" "point3 P" [-10 -10 0 10 -10 0 10 10 0 -10 10 0] "integer indices" [0 1 2 0 2 3]
+        return test::irradiance_receiver(fmt::format(R"(
 AttributeBegin
   Material "diffuse" "rgb reflectance" [0 0 0]
   AreaLightSource "diffuse" "rgb L" [1 1 1]
@@ -83,7 +75,7 @@ AttributeEnd
 Material "diffuse" "rgb reflectance" [0 0 0]
 Shape "trianglemesh" "point3 P" [-3 -3 1 3 -3 1 3 3 1 -3 3 1] "integer indices" [0 1 2 0 2 3] {}
 )",
-                           alpha);
+                                                     alpha));
     };
     test::RenderSetup s;
     s.integrator = "direct";
