@@ -5,6 +5,8 @@
 #include "illum/analysis/albedo.h"
 #include "illum/analysis/audit.h"
 #include "illum/analysis/stats.h"
+#include "illum/analysis/weighted_histogram_test.h"
+#include "illum/bsdf/coated.h"
 #include "illum/bsdf/lambert.h"
 #include "illum/bsdf/phong.h"
 #include "illum/math/warp.h"
@@ -73,6 +75,59 @@ TEST(ChiSquare, RejectsMisweightedPdfs) {
         auto a = audit_bxdf(bad, AuditTraits{}, o);
         EXPECT_FALSE(a.passed());
     }
+}
+
+// A stochastic-looking Lambert: f() exact, sample() weights tilted by (1 + tilt wi.x), which moves
+// energy from -x to +x without changing the albedo much (what a wrong Jacobian in a random walk does).
+class TiltedLambert final : public BxDF {
+public:
+    explicit TiltedLambert(float tilt) : tilt_(tilt) {}
+    std::uint8_t flags() const override { return kDiffuseReflection; }
+    Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode m) const override { return base_.f(wo, wi, m); }
+    std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode m) const override {
+        auto s = base_.sample(wo, uc, u, m);
+        if (s) {
+            s->f = Bsdf3(s->f.rgb * (1 + tilt_ * s->wi.x));
+            s->pdf_is_proportional = true;
+        }
+        return s;
+    }
+    SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode m) const override {
+        return base_.pdf(wo, wi, m);
+    }
+
+private:
+    LambertBxDF base_{Color3(0.5f)};
+    float tilt_;
+};
+
+TEST(WeightedHistogram, AcceptsConsistentSamplingAndRejectsATilt) {
+    // Calibration: a correct deterministic model and a correct stochastic one pass at the audit's settings.
+    AuditOptions o;
+    for (double t : {10.0, 60.0}) {
+        auto r = weighted_histogram_test(TiltedLambert(0), direction_deg(t, 20), TransportMode::Radiance,
+                                         o.weighted_samples, o.weighted_cos_bins, o.weighted_phi_bins,
+                                         o.weighted_f_per_bin, 11);
+        EXPECT_GT(r.p_value, 1e-3) << r.detail;
+    }
+    CoatedDiffuseBxDF coated(DielectricInterface(1.5f, {0.2f, 0.2f}), LambertBxDF(Color3(0.7f)),
+                             LayerMedium{}, 10, 1);
+    auto r =
+        weighted_histogram_test(coated, direction_deg(40, 20), TransportMode::Radiance, o.weighted_samples,
+                                o.weighted_cos_bins, o.weighted_phi_bins, o.weighted_f_per_bin, 12);
+    EXPECT_GT(r.p_value, 1e-3) << r.detail;
+    // A 10% tilt of the sample weights is found.
+    r = weighted_histogram_test(TiltedLambert(0.1f), direction_deg(30, 20), TransportMode::Radiance,
+                                o.weighted_samples, o.weighted_cos_bins, o.weighted_phi_bins,
+                                o.weighted_f_per_bin, 13);
+    EXPECT_LT(r.p_value, 1e-6) << r.detail;
+    // And the audit of a stochastic model reports it.
+    AuditTraits traits;
+    traits.stochastic = true;
+    o.energy_samples = 5000;
+    o.pairs = 100;
+    EXPECT_FALSE(audit_bxdf(TiltedLambert(0.1f), traits, o).passed());
+    EXPECT_TRUE(audit_bxdf(TiltedLambert(0.0f), traits, o).passed());
 }
 
 } // namespace

@@ -113,11 +113,13 @@ TEST(ThinDielectric, ReflectsMoreThanOneFaceAndIsLossless) {
 }
 
 TEST(CoatedDiffuse, WhiteBaseLosesOnlyTruncatedWalks) {
-    CoatedDiffuseBxDF coated(1.5f, LambertBxDF(Color3(1)), 100, 1);
+    CoatedDiffuseBxDF coated(DielectricInterface(1.5f, {0, 0}), LambertBxDF(Color3(1)),
+                             LayerMedium{0, Color3(0.0f), 0}, 100, 1);
     Rgb64 mean, se;
     albedo_monte_carlo(coated, direction_deg(30, 0), 20000, 5, &mean, &se);
     EXPECT_NEAR(mean[0], 1, 4 * se[0] + 0.01);
-    CoatedDiffuseBxDF grey(1.5f, LambertBxDF(Color3(0.5f)), 100, 1);
+    CoatedDiffuseBxDF grey(DielectricInterface(1.5f, {0, 0}), LambertBxDF(Color3(0.5f)), LayerMedium{}, 100,
+                           1);
     albedo_monte_carlo(grey, direction_deg(30, 0), 20000, 5, &mean, &se);
     EXPECT_LT(mean[0], 0.6);
     EXPECT_GT(mean[0], 0.3);

@@ -39,6 +39,8 @@ struct AuditOptions {
     int chi2_samples = 100000;
     int chi2_theta_bins = 36, chi2_phi_bins = 72;
     int energy_samples = 40000;
+    // The weighted-histogram test of stochastic models (sample() against f()).
+    int weighted_samples = 200000, weighted_cos_bins = 4, weighted_phi_bins = 8, weighted_f_per_bin = 4096;
     int quadrature_theta = 192;
     int pairs = 1000; // random direction pairs for positivity and reciprocity
     std::uint64_t seed = 12345;

@@ -41,6 +41,11 @@ constexpr BxDFFlags operator|(BxDFFlags a, BxDFFlags b) {
 }
 constexpr bool has_flag(std::uint8_t flags, BxDFFlags f) { return (flags & f) != 0; }
 
+// The lobes a restricted sample or pdf may use (pbrt-v4's BxDFReflTransFlags): a layered model samples
+// "transmission only" to enter or leave through its coat and "reflection only" to stay inside it. The
+// restricted density is the full one conditioned on the chosen side.
+enum class Lobes : std::uint8_t { All, Reflection, Transmission };
+
 struct BSDFSample {
     Vector3f wi;
     Bsdf3 f;

@@ -23,22 +23,31 @@ public:
     Bsdf3 f(Vector3f, Vector3f, TransportMode) const override { return {}; }
     SolidAnglePdf pdf(Vector3f, Vector3f, TransportMode) const override { return SolidAnglePdf(0); }
 
-    std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f, TransportMode mode) const override {
+    std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override {
+        return sample_lobes(wo, uc, u, mode, Lobes::All);
+    }
+    // Reflection with probability pr / (pr + pt), pr = R and pt = T unless a side is excluded.
+    std::optional<BSDFSample> sample_lobes(Vector3f wo, float uc, Point2f, TransportMode mode,
+                                           Lobes lobes) const {
         float R = fresnel_(wo.z), T = 1 - R;
-        if (uc < R || T <= 0) {
+        float pr = lobes == Lobes::Transmission ? 0 : R, pt = lobes == Lobes::Reflection ? 0 : T;
+        if (!(pr + pt > 0)) return std::nullopt;
+        if (uc < pr / (pr + pt)) {
             Vector3f wi = reflect_z(wo);
             if (wi.z == 0) return std::nullopt;
-            return BSDFSample{wi, Bsdf3(Color3(R / std::abs(wi.z))), SolidAnglePdf(R), kSpecularReflection};
+            return BSDFSample{wi, Bsdf3(Color3(R / std::abs(wi.z))), SolidAnglePdf(pr / (pr + pt)),
+                              kSpecularReflection};
         }
         Vector3f wi;
         float etap;
         if (!refract(wo, Vector3f(0, 0, 1), fresnel_.eta, &etap, &wi) || wi.z == 0) return std::nullopt;
         float ft = T / std::abs(wi.z);
         if (mode == TransportMode::Radiance) ft /= etap * etap;
-        BSDFSample s{wi, Bsdf3(Color3(ft)), SolidAnglePdf(T), kSpecularTransmission};
+        BSDFSample s{wi, Bsdf3(Color3(ft)), SolidAnglePdf(pt / (pr + pt)), kSpecularTransmission};
         s.eta = etap;
         return s;
     }
+    SolidAnglePdf pdf_lobes(Vector3f, Vector3f, TransportMode, Lobes) const { return SolidAnglePdf(0); }
     float eta() const { return fresnel_.eta; }
     const DielectricFresnel& fresnel() const { return fresnel_; }
 

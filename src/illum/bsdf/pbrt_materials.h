@@ -114,21 +114,30 @@ private:
     float eta_;
 };
 
-// pbrt-v4 "coateddiffuse" with illum's layered model: a smooth dielectric coat over a Lambertian base,
-// evaluated by a random walk (coated.h). Differences from pbrt-v4: the coat is always smooth (pbrt-v4
-// roughens it with `roughness`), and the layer between holds no scattering medium; its absorption over
-// `thickness` (pbrt-v4 attenuates by exp(-thickness/|cos θ|) per crossing even with albedo 0) is folded
-// into the base reflectance as exp(-4 thickness), the round trip at the mean 1/|cos θ| = 2 of a
-// cosine-distributed direction.
+// The layer of pbrt-v4's coated materials: thickness, medium albedo and asymmetry g (textures), and the
+// walk's limits.
+struct LayerParams {
+    const FloatTexture* thickness = nullptr;
+    const ColorTexture* albedo = nullptr;
+    const FloatTexture* g = nullptr;
+    int max_depth = 10, samples = 1;
+
+    LayerMedium medium(const SurfaceHit& hit) const {
+        return {std::max(0.0f, thickness->evaluate(hit)), clamp(albedo->evaluate(hit), 0.0f, 1.0f),
+                std::clamp(g->evaluate(hit), -0.99f, 0.99f)};
+    }
+};
+
+// pbrt-v4 "coateddiffuse": a dielectric coat (index η, roughness as pbrt-v4 maps it) over a Lambertian
+// base, with the layer's medium between; layered.h.
 class CoatedDiffuseMaterial final : public Material {
 public:
-    CoatedDiffuseMaterial(const ColorTexture* reflectance, float eta, float thickness, int max_depth,
-                          int samples)
-        : reflectance_(reflectance), eta_(eta), attenuation_(std::exp(-4 * thickness)), max_depth_(max_depth),
-          samples_(samples) {}
+    CoatedDiffuseMaterial(const ColorTexture* reflectance, float eta, RoughnessParams coat, LayerParams layer)
+        : reflectance_(reflectance), eta_(eta), coat_(coat), layer_(layer) {}
     BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
-        Color3 r = clamp(reflectance_->evaluate(hit), 0.0f, 1.0f) * attenuation_;
-        return BSDF(arena.make<CoatedDiffuseBxDF>(eta_, LambertBxDF(r), max_depth_, samples_),
+        Color3 r = clamp(reflectance_->evaluate(hit), 0.0f, 1.0f);
+        return BSDF(arena.make<CoatedDiffuseBxDF>(DielectricInterface(eta_, coat_.alpha(hit)), LambertBxDF(r),
+                                                  layer_.medium(hit), layer_.max_depth, layer_.samples),
                     hit.shading_frame());
     }
     Color3 albedo(const SurfaceHit& hit) const override {
@@ -137,36 +146,36 @@ public:
 
 private:
     const ColorTexture* reflectance_;
-    float eta_, attenuation_;
-    int max_depth_, samples_;
+    float eta_;
+    RoughnessParams coat_;
+    LayerParams layer_;
 };
 
-// pbrt-v4 "coatedconductor": a smooth coat of index η over a rough conductor whose index is taken relative
-// to the coat (η_c / η, k_c / η), as pbrt-v4 does. A smooth base conductor gets the smallest roughness
-// the rough model takes (α = 1e-3).
+// pbrt-v4 "coatedconductor": a dielectric coat over a conductor (smooth or rough) whose index is taken
+// relative to the coat (η_c / η, k_c / η), as pbrt-v4 does.
 class CoatedConductorMaterial final : public Material {
 public:
-    CoatedConductorMaterial(float interface_eta, const ConductorMaterial* conductor, RoughnessParams rough,
-                            int max_depth, int samples)
-        : eta_(interface_eta), conductor_(conductor), rough_(rough), max_depth_(max_depth),
-          samples_(samples) {}
+    CoatedConductorMaterial(float interface_eta, RoughnessParams interface,
+                            const ConductorMaterial* conductor, RoughnessParams conductor_rough,
+                            LayerParams layer)
+        : eta_(interface_eta), interface_(interface), conductor_(conductor), rough_(conductor_rough),
+          layer_(layer) {}
     BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
         Color3 eta, k;
         conductor_->index(hit, &eta, &k);
-        eta /= eta_;
-        k /= eta_;
-        Vector2f a = rough_.alpha(hit);
-        if (a.x == 0) a = {1e-3f, 1e-3f};
-        RoughConductorBxDF base(ggx(a), Fresnel{eta, k, FresnelMode::Exact});
-        return BSDF(arena.make<CoatedConductorBxDF>(eta_, base, max_depth_, samples_), hit.shading_frame());
+        ConductorInterface base(Fresnel{eta / eta_, k / eta_, FresnelMode::Exact}, rough_.alpha(hit));
+        return BSDF(arena.make<CoatedConductorBxDF>(DielectricInterface(eta_, interface_.alpha(hit)), base,
+                                                    layer_.medium(hit), layer_.max_depth, layer_.samples),
+                    hit.shading_frame());
     }
     Color3 albedo(const SurfaceHit& hit) const override { return conductor_->albedo(hit); }
 
 private:
     float eta_;
+    RoughnessParams interface_;
     const ConductorMaterial* conductor_;
     RoughnessParams rough_;
-    int max_depth_, samples_;
+    LayerParams layer_;
 };
 
 class DiffuseTransmissionMaterial final : public Material {

@@ -135,6 +135,28 @@ std::vector<ParamSpec> alpha_params(double def) {
 constexpr const char* kGoldEtaStr = "0.143119,0.374957,1.44248";
 constexpr const char* kGoldKStr = "3.98316,2.38572,1.60322";
 
+// The parameters every layered model shares, after the base's own.
+std::vector<ParamSpec> layer_params(std::vector<ParamSpec> base) {
+    for (ParamSpec p : {scalar("eta", 1.5, 1e-3, 100, "coat index"),
+                        scalar("roughness", 0, 0, 2, "coat roughness α (GGX; below 0.001 smooth)"),
+                        scalar("thickness", 0.01, 0, 1e6, "layer optical depth (extinction 1 per unit)"),
+                        rgb("albedo", "0", 0, 1, "single-scattering albedo of the layer's medium (0: none)"),
+                        scalar("g", 0, -0.999, 0.999, "Henyey-Greenstein asymmetry of the medium"),
+                        integer("max_depth", 10, 1, 1000, "maximum events inside the layer"),
+                        integer("samples", 1, 1, 1000, "random walks per f() evaluation")})
+        base.push_back(p);
+    return base;
+}
+template <class P>
+DielectricInterface coat_interface(const P& p) {
+    float a = p.scalar("roughness");
+    return DielectricInterface(p.scalar("eta"), Vector2f(a, a));
+}
+template <class P>
+LayerMedium layer_medium(const P& p) {
+    return {p.scalar("thickness"), p.rgb("albedo"), p.scalar("g")};
+}
+
 // A MERL table tabulated from a GGX gold rough conductor; `synthetic:ALPHA` in place of a file name.
 std::shared_ptr<const MerlTable> synthetic_merl(float alpha) {
     static std::mutex mutex;
@@ -385,43 +407,51 @@ std::vector<ModelSpec> build_models() {
                                                       p.has("alpha_y") ? p.scalar("alpha_y") : a);
                  })});
     m.push_back({"coated-diffuse",
-                 "Lambertian base under a smooth dielectric coat (stochastic layered)",
-                 {rgb("reflectance", "0.5", 0, 1, "base albedo"), scalar("eta", 1.5, 1e-3, 100, "coat index"),
-                  integer("max_depth", 10, 1, 1000, "maximum bounces inside the coat"),
-                  integer("samples", 1, 1, 1000, "random walks per f() evaluation")},
-                 {{P{{"reflectance", "0.5"}}}, {P{{"reflectance", "1"}, {"eta", "1.33"}}}},
+                 "Lambertian base under a dielectric coat, smooth or rough, with an optional medium between "
+                 "(stochastic layered, as pbrt-v4's coateddiffuse)",
+                 layer_params({rgb("reflectance", "0.5", 0, 1, "base albedo")}),
+                 {{P{{"reflectance", "0.5"}}},
+                  {P{{"reflectance", "1"}, {"eta", "1.33"}}},
+                  {P{{"reflectance", "0.8"}, {"roughness", "0.3"}}},
+                  {P{{"reflectance", "0.3"},
+                     {"roughness", "0.1"},
+                     {"albedo", "0.8,0.5,0.2"},
+                     {"thickness", "0.5"},
+                     {"g", "0.4"}}}},
                  false,
                  false,
                  true,
                  "",
                  factory([](const auto& p, const auto& m) {
                      return m.template make<CoatedDiffuseBxDF>(
-                         p.scalar("eta"), LambertBxDF(p.rgb("reflectance")), p.integer("max_depth"),
-                         p.integer("samples"), "coated-diffuse");
+                         coat_interface(p), LambertBxDF(p.rgb("reflectance")), layer_medium(p),
+                         p.integer("max_depth"), p.integer("samples"), "coated-diffuse");
                  })});
     {
-        std::vector<ParamSpec> params = {scalar("eta", 1.5, 1e-3, 100, "coat index")};
-        for (auto& a : alpha_params(0.2)) params.push_back(a);
+        std::vector<ParamSpec> params = alpha_params(0.2);
         params.push_back(
             rgb("conductor_eta", kGoldEtaStr, 1e-3, 100, "base index, real part (default: gold)"));
         params.push_back(rgb("conductor_k", kGoldKStr, 0, 100, "base index, imaginary part (default: gold)"));
-        params.push_back(integer("max_depth", 10, 1, 1000, "maximum bounces inside the coat"));
-        params.push_back(integer("samples", 1, 1, 1000, "random walks per f() evaluation"));
-        m.push_back({"coated-conductor",
-                     "rough conductor base under a smooth dielectric coat (stochastic layered)",
-                     params,
-                     {{P{{"alpha", "0.2"}}}, {P{{"alpha", "0.5"}, {"distribution", "beckmann"}}}},
-                     false,
-                     false,
-                     true,
-                     "",
-                     factory([](const auto& p, const auto& m) {
-                         RoughConductorBxDF base(distribution(p),
-                                                 Fresnel{p.rgb("conductor_eta"), p.rgb("conductor_k")});
-                         return m.template make<CoatedConductorBxDF>(
-                             p.scalar("eta"), base, p.integer("max_depth"), p.integer("samples"),
-                             "coated-conductor");
-                     })});
+        m.push_back(
+            {"coated-conductor",
+             "rough conductor base (alpha) under a dielectric coat, smooth or rough, with an optional "
+             "medium between (stochastic layered, as pbrt-v4's coatedconductor)",
+             layer_params(params),
+             {{P{{"alpha", "0.2"}}},
+              {P{{"alpha", "0.5"}, {"distribution", "beckmann"}}},
+              {P{{"alpha", "0.1"}, {"roughness", "0.2"}}},
+              {P{{"alpha", "0.3"}, {"albedo", "0.5"}, {"thickness", "0.3"}}}},
+             false,
+             false,
+             true,
+             "",
+             factory([](const auto& p, const auto& m) {
+                 RoughConductorBxDF base(distribution(p),
+                                         Fresnel{p.rgb("conductor_eta"), p.rgb("conductor_k")});
+                 return m.template make<CoatedConductorBxDF>(coat_interface(p), ConductorInterface(base),
+                                                             layer_medium(p), p.integer("max_depth"),
+                                                             p.integer("samples"), "coated-conductor");
+             })});
     }
     m.push_back({"diffuse-transmission",
                  "thin translucent sheet: Lambertian reflection and transmission",

@@ -50,15 +50,27 @@ public:
     }
 
     std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override {
+        return sample_lobes(wo, uc, u, mode, Lobes::All);
+    }
+    SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode mode) const override {
+        return pdf_lobes(wo, wi, mode, Lobes::All);
+    }
+
+    // At the sampled microfacet, reflection with probability pr / (pr + pt), pr = F and pt = 1 - F unless
+    // a side is excluded.
+    std::optional<BSDFSample> sample_lobes(Vector3f wo, float uc, Point2f u, TransportMode mode,
+                                           Lobes lobes) const {
         if (wo.z == 0) return std::nullopt;
         Vector3f wm = distrib_.sample_wm(wo, u);
         Vector3f wof = wo.z < 0 ? -wo : wo;
         if (dot(wof, wm) <= 0) return std::nullopt;
-        float R = fresnel_(dot(wo, wm)), T = 1 - R;
-        if (uc < R || T <= 0) {
+        float pr, pt;
+        lobe_weights(dot(wo, wm), lobes, &pr, &pt);
+        if (!(pr + pt > 0)) return std::nullopt;
+        if (uc < pr / (pr + pt)) {
             Vector3f wi = reflect(wo, wm);
             if (!same_hemisphere(wo, wi)) return std::nullopt;
-            float pdf = distrib_.pdf_wm(wo, wm) / (4 * abs_dot(wo, wm)) * R;
+            float pdf = distrib_.pdf_wm(wo, wm) / (4 * abs_dot(wo, wm)) * pr / (pr + pt);
             if (!(pdf > 0)) return std::nullopt;
             return BSDFSample{wi, f(wo, wi, mode), SolidAnglePdf(pdf), kGlossyReflection};
         }
@@ -67,17 +79,19 @@ public:
         if (!refract(wo, wm, fresnel_.eta, &etap, &wi)) return std::nullopt;
         if (same_hemisphere(wo, wi) || wi.z == 0) return std::nullopt;
         float denom = sqr(dot(wi, wm) + dot(wo, wm) / etap);
-        float pdf = distrib_.pdf_wm(wo, wm) * abs_dot(wi, wm) / denom * T;
+        float pdf = distrib_.pdf_wm(wo, wm) * abs_dot(wi, wm) / denom * pt / (pr + pt);
         if (!(pdf > 0)) return std::nullopt;
         BSDFSample s{wi, f(wo, wi, mode), SolidAnglePdf(pdf), kGlossyTransmission};
         s.eta = etap;
         return s;
     }
 
-    SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode) const override {
+    SolidAnglePdf pdf_lobes(Vector3f wo, Vector3f wi, TransportMode, Lobes lobes) const {
         float co = cos_theta(wo), ci = cos_theta(wi);
         if (co == 0 || ci == 0) return SolidAnglePdf(0);
         bool reflect = co * ci > 0;
+        if ((reflect && lobes == Lobes::Transmission) || (!reflect && lobes == Lobes::Reflection))
+            return SolidAnglePdf(0);
         float etap = 1;
         if (!reflect) etap = co > 0 ? fresnel_.eta : 1 / fresnel_.eta;
         Vector3f wm = wi * etap + wo;
@@ -85,13 +99,21 @@ public:
         wm = normalize(wm);
         if (wm.z < 0) wm = -wm;
         if (dot(wm, wi) * ci < 0 || dot(wm, wo) * co < 0) return SolidAnglePdf(0);
-        float R = fresnel_(dot(wo, wm)), T = 1 - R;
-        if (reflect) return SolidAnglePdf(distrib_.pdf_wm(wo, wm) / (4 * abs_dot(wo, wm)) * R);
+        float pr, pt;
+        lobe_weights(dot(wo, wm), lobes, &pr, &pt);
+        if (!(pr + pt > 0)) return SolidAnglePdf(0);
+        if (reflect) return SolidAnglePdf(distrib_.pdf_wm(wo, wm) / (4 * abs_dot(wo, wm)) * pr / (pr + pt));
         float denom = sqr(dot(wi, wm) + dot(wo, wm) / etap);
-        return SolidAnglePdf(distrib_.pdf_wm(wo, wm) * abs_dot(wi, wm) / denom * T);
+        return SolidAnglePdf(distrib_.pdf_wm(wo, wm) * abs_dot(wi, wm) / denom * pt / (pr + pt));
     }
 
 private:
+    void lobe_weights(float cos_om, Lobes lobes, float* pr, float* pt) const {
+        float R = fresnel_(cos_om);
+        *pr = lobes == Lobes::Transmission ? 0 : R;
+        *pt = lobes == Lobes::Reflection ? 0 : 1 - R;
+    }
+
     MicrofacetDistribution distrib_;
     DielectricFresnel fresnel_;
 };

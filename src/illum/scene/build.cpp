@@ -465,33 +465,16 @@ private:
         return ptr;
     }
 
-    void layered_warnings(const EntityDesc& m, const char* rough_name) {
-        // The coat's roughness: "roughness", or "uroughness"/"vroughness" (with any prefix, as in
-        // "interface.roughness"). All of them are read here, so none is reported unused.
-        std::string base(rough_name), u = base, v = base;
-        std::size_t at = base.find("roughness");
-        u.replace(at, 9, "uroughness");
-        v.replace(at, 9, "vroughness");
-        // pbrt-v4 treats α < 1e-3 as smooth; illum's coat is always smooth, so warn from α > 2e-3 on.
-        bool remap = m.params.get_bool("remaproughness", true);
-        auto alpha = [&](float x) { return remap ? std::sqrt(std::max(x, 0.0f)) : x; };
-        const Param* r = nullptr;
-        for (const std::string& name : {base, u, v}) {
-            const Param* p = m.params.find(name);
-            if (!p) continue;
-            p->used = true;
-            if (!r && (p->type != ParamType::Float || alpha(m.params.get_float(p->name, 0)) > 2e-3f)) r = p;
-        }
-        if (r) unsupported(r->loc, fmt::format("a rough coat (\"{}\") is rendered smooth", r->name));
-        if (m.params.has("albedo")) {
-            const Param* a = m.params.find("albedo");
-            Color3 al = a->type == ParamType::RGB ? *m.params.get_rgb("albedo")
-                                                  : Color3(m.params.get_float("albedo", 0));
-            if (a->type != ParamType::RGB && a->type != ParamType::Float) a->used = true;
-            if (!al.is_black())
-                unsupported(a->loc, "a scattering medium in a coated material (\"albedo\") is ignored");
-        }
-        if (m.params.has("g")) m.params.get_float("g", 0);
+    // The layer of a coated material: pbrt-v4's "thickness" (0.01), "albedo" (0), "g" (0), "maxdepth" (10)
+    // and "nsamples" (1).
+    LayerParams layer_params(const EntityDesc& m) {
+        LayerParams l;
+        l.thickness = float_param(m, "thickness", 0.01f);
+        l.albedo = color_param(m, "albedo", Color3(0.0f));
+        l.g = float_param(m, "g", 0.0f);
+        l.max_depth = int_param(m, "maxdepth", 10, 1, 1000);
+        l.samples = int_param(m, "nsamples", 1, 1, 1000);
+        return l;
     }
 
     // illum's own reflection models (`illum brdf list`) by name, with constant parameters, e.g.
@@ -589,23 +572,16 @@ private:
             return own(std::make_unique<DielectricMaterial>(eta_param(m, "eta", 1.5f), roughness(m)));
         if (type == "thindielectric")
             return own(std::make_unique<ThinDielectricMaterial>(eta_param(m, "eta", 1.5f)));
-        if (type == "coateddiffuse") {
-            layered_warnings(m, "roughness");
-            float thickness = m.params.get_float("thickness", 0.01f);
-            if (!(thickness >= 0))
-                throw Error(m.params.find("thickness")->loc, "\"thickness\" must be non-negative");
-            return own(std::make_unique<CoatedDiffuseMaterial>(
-                color_param(m, "reflectance", Color3(0.5f)), eta_param(m, "eta", 1.5f), thickness,
-                int_param(m, "maxdepth", 10, 1, 1000), int_param(m, "nsamples", 1, 1, 1000)));
-        }
+        if (type == "coateddiffuse")
+            return own(std::make_unique<CoatedDiffuseMaterial>(color_param(m, "reflectance", Color3(0.5f)),
+                                                               eta_param(m, "eta", 1.5f), roughness(m),
+                                                               layer_params(m)));
         if (type == "coatedconductor") {
-            layered_warnings(m, "interface.roughness");
-            m.params.get_float("thickness", 0.01f);
             float ieta = eta_param(m, "interface.eta", 1.5f);
+            RoughnessParams coat = roughness(m, "interface.");
             const ConductorMaterial* c = conductor(m, "conductor.");
-            return own(std::make_unique<CoatedConductorMaterial>(ieta, c, roughness(m, "conductor."),
-                                                                 int_param(m, "maxdepth", 10, 1, 1000),
-                                                                 int_param(m, "nsamples", 1, 1, 1000)));
+            return own(std::make_unique<CoatedConductorMaterial>(ieta, coat, c, roughness(m, "conductor."),
+                                                                 layer_params(m)));
         }
         if (type == "diffusetransmission")
             return own(std::make_unique<DiffuseTransmissionMaterial>(
