@@ -17,6 +17,7 @@
 #include "illum/bsdf/fresnel.h"
 #include "illum/bsdf/registry.h"
 #include "illum/image/image_io.h"
+#include "illum/radiometry/conductor_rgb.h"
 #include "illum/render/renderer.h"
 #include "illum/util/error.h"
 
@@ -250,14 +251,27 @@ void add_brdf_command(CLI::App& app) {
 
     CLI::App* fres = brdf->add_subcommand("fresnel", "exact Fresnel against Schlick's approximation over θ");
     fres->add_option("--eta", opt->eta, "dielectric index of refraction")->check(positive_number());
-    fres->add_option("--metal", opt->metal, "conductor: gold, or n,k for one wavelength");
+    fres->add_option(
+        "--metal", opt->metal,
+        "conductor: gold (the registry's RGB gold), a measured material of pbrt-v4's named spectra "
+        "(Ag, Al, Au, Cu, CuZn, MgO, TiO2: its RGB index fitted to the spectra), or n,k");
     fres->callback([opt] {
         Color3 n = kGoldEta, k = kGoldK;
         std::string name = "gold (RGB)";
-        if (opt->metal != "gold") {
-            auto v = parse_list(opt->metal, "--metal");
+        if (const ConductorRgb* c = named_conductor_rgb(opt->metal)) {
+            n = c->eta;
+            k = c->k;
+            Color3 f0 = reflectance_rgb(*measured_index(opt->metal), 1.0);
+            name = fmt::format(
+                "{} (η = {:.4f} {:.4f} {:.4f}, k = {:.4f} {:.4f} {:.4f}; spectral F0 = {:.4f} {:.4f} "
+                "{:.4f})",
+                opt->metal, n.r, n.g, n.b, k.r, k.g, k.b, f0.r, f0.g, f0.b);
+        } else if (opt->metal != "gold") {
+            auto v = opt->metal.find(',') == std::string::npos ? std::vector<double>{}
+                                                               : parse_list(opt->metal, "--metal");
             if (v.size() != 2 || !(v[0] > 0) || !(v[1] >= 0))
-                throw Error("--metal expects gold or n,k with n > 0, k >= 0");
+                throw Error(
+                    "--metal expects gold, Ag, Al, Au, Cu, CuZn, MgO, TiO2 or n,k with n > 0, k >= 0");
             n = Color3(float(v[0]));
             k = Color3(float(v[1]));
             name = opt->metal;

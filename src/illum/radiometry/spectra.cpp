@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
+
+#include "illum/radiometry/conductor_rgb.h"
 
 namespace illum {
 
@@ -108,32 +111,12 @@ struct NamedRgb {
     const char* name;
     Color3 rgb;
 };
-// Metals: linear sRGB values of the complex index of refraction η + ik, the result of integrating the
-// measured spectra against the CIE 1931 matching functions as published with Mitsuba 0.5 (its
-// data/ior tables: Johnson & Christy 1972 for Ag, Au, Cu; Rakić 1995 for Al). Not re-derived here from
-// tabulated spectra (see docs/scenes.md).
 const NamedRgb kNamed[] = {
-    {"metal-Ag-eta", {0.155265f, 0.116723f, 0.138342f}},
-    {"metal-Ag-k", {4.82835f, 3.12225f, 2.14696f}},
-    {"metal-Al-eta", {1.65746f, 0.880369f, 0.521229f}},
-    {"metal-Al-k", {9.22387f, 6.26952f, 4.837f}},
-    {"metal-Au-eta", {0.143119f, 0.374957f, 1.44248f}},
-    {"metal-Au-k", {3.98316f, 2.38572f, 1.60322f}},
-    {"metal-Cu-eta", {0.200438f, 0.924033f, 1.10221f}},
-    {"metal-Cu-k", {3.91295f, 2.45285f, 2.14219f}},
-    {"metal-CuZn-eta", {0.444f, 0.527f, 1.094f}},
-    {"metal-CuZn-k", {3.695f, 2.765f, 1.829f}},
     // Glasses: the refractive index at 550 nm from the Schott Sellmeier coefficients (pbrt-v4 renders
     // their dispersion; an RGB renderer cannot).
-    {"glass-BK7", Color3(1.5185f)},
-    {"glass-BAF10", Color3(1.6700f)},
-    {"glass-FK51A", Color3(1.4868f)},
-    {"glass-LASF9", Color3(1.8503f)},
-    {"glass-F5", Color3(1.6058f)},
-    {"glass-F10", Color3(1.6248f)},
-    {"glass-F11", Color3(1.6238f)},
-    {"glass-SF5", Color3(1.6755f)},
-    {"glass-SF10", Color3(1.7331f)},
+    {"glass-BK7", Color3(1.5185f)},   {"glass-BAF10", Color3(1.6700f)}, {"glass-FK51A", Color3(1.4868f)},
+    {"glass-LASF9", Color3(1.8503f)}, {"glass-F5", Color3(1.6058f)},    {"glass-F10", Color3(1.6248f)},
+    {"glass-F11", Color3(1.6238f)},   {"glass-SF5", Color3(1.6755f)},   {"glass-SF10", Color3(1.7331f)},
     {"glass-SF11", Color3(1.7899f)},
 };
 } // namespace
@@ -141,6 +124,15 @@ const NamedRgb kNamed[] = {
 bool is_illuminant_name(const std::string& name) { return name.rfind("stdillum-", 0) == 0; }
 
 std::optional<Color3> named_spectrum_rgb(const std::string& name) {
+    // "metal-<El>-eta" / "metal-<El>-k": the RGB index fitted to the measured spectra (conductor_rgb.h).
+    if (name.rfind("metal-", 0) == 0) {
+        std::string_view rest = std::string_view(name).substr(6);
+        bool eta = rest.ends_with("-eta"), k = rest.ends_with("-k");
+        if (!eta && !k) return std::nullopt;
+        const ConductorRgb* c = named_conductor_rgb(rest.substr(0, rest.size() - (eta ? 4 : 2)));
+        if (!c) return std::nullopt;
+        return eta ? c->eta : c->k;
+    }
     for (const NamedRgb& n : kNamed)
         if (name == n.name) return n.rgb;
     if (name == "stdillum-D65") return Color3(1.0f); // the sRGB white point, luminance 1

@@ -41,9 +41,10 @@ Color3 unbounded_spectrum_to_rgb(const SampledSpectrum& s);
 Color3 illuminant_spectrum_to_rgb(const SampledSpectrum& s);
 Color3 blackbody_rgb(double kelvin); // luminance 1
 
-// pbrt-v4's named spectra. Metals: "metal-<El>-eta"/"metal-<El>-k" for Ag, Al, Au, Cu (and a few more);
-// glasses "glass-BK7", ... (the index at 550 nm, as a grey value); "stdillum-D65", "stdillum-A"...
-// (luminance 1). Returns nothing for an unknown name.
+// pbrt-v4's named spectra. Metals: "metal-<El>-eta"/"metal-<El>-k" for Ag, Al, Au, Cu, CuZn, MgO, TiO2,
+// RGB indices fitted to the measured spectra (metal_spectra.h, conductor_rgb.h); glasses "glass-BK7", ...
+// (the index at 550 nm, as a grey value); "stdillum-D65", "stdillum-A"... (luminance 1). Returns nothing for
+// an unknown name.
 std::optional<Color3> named_spectrum_rgb(const std::string& name);
 bool is_illuminant_name(const std::string& name);
 
