@@ -5,6 +5,7 @@
 #include "illum/analysis/albedo.h"
 #include "illum/bsdf/registry.h"
 #include "illum/bsdf/shared_bxdf_material.h"
+#include "illum/geometry/sphere.h"
 #include "illum/light/diffuse_area_light.h"
 #include "illum/light/uniform_environment_light.h"
 
@@ -66,8 +67,8 @@ std::unique_ptr<Scene> make_gallery_scene(int width, int height) {
         AlbedoEstimate a = directional_albedo(*bxdf, {0, 0, 1}, spec.delta, 16, 4096, 1);
         Color3 albedo(float(a.mc[0]), float(a.mc[1]), float(a.mc[2]));
         s.materials.push_back(std::make_unique<SharedBxDFMaterial>(std::move(bxdf), albedo));
-        s.accelerator.add_sphere(std::make_unique<SphereShape>(c, radius, false), s.materials.back().get(),
-                                 nullptr);
+        s.accelerator.add_shape(std::make_unique<SphereShape>(c, radius, false), s.materials.back().get(),
+                                nullptr);
     }
 
     // A one-sided rectangular light above and in front, facing down towards the spheres.

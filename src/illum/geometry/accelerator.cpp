@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <limits>
 
+#include "illum/geometry/sphere.h"
 #include "illum/math/rng.h"
 #include "illum/util/error.h"
 #include <cstring>
@@ -18,10 +19,32 @@ void embree_error(void*, RTCError code, const char* message) {
     fmt::print(stderr, "warning: Embree error {}: {}\n", int(code), message ? message : "");
 }
 
-// User geometry callbacks for disks (single rays only: illum traces rays one at a time).
-void disk_bounds(const RTCBoundsFunctionArguments* args) {
-    auto* disk = static_cast<const DiskShape*>(args->geometryUserPtr);
-    Bounds3f b = disk->bounds();
+// pbrt-v4's stochastic alpha test: keep a hit of alpha a with probability a, by a uniform number hashed
+// from the ray, the geometry and the crossing (a triangle, or a root of an analytic shape), so the
+// decision is deterministic per ray and independent between the surfaces a ray crosses.
+bool alpha_keeps(float a, const RTCRay& r, std::uint32_t geom_id, std::uint32_t crossing) {
+    if (a >= 1) return true;
+    if (a <= 0) return false;
+    auto bits = [](float f) {
+        std::uint32_t u;
+        std::memcpy(&u, &f, sizeof u);
+        return u;
+    };
+    std::uint64_t key = hash(bits(r.org_x), bits(r.org_y), bits(r.org_z), bits(r.dir_x), bits(r.dir_y),
+                             bits(r.dir_z), geom_id, crossing);
+    return float(key >> 40) * 0x1p-24f <= a;
+}
+
+// Whether a crossing of an analytic shape survives its alpha test.
+bool shape_keeps(const AnalyticShape& shape, const Crossing& c, const RTCRay& r, std::uint32_t geom_id) {
+    if (!shape.alpha()) return true;
+    return alpha_keeps(shape.alpha()->evaluate(shape.alpha_point(c)), r, geom_id, std::uint32_t(c.root));
+}
+
+// User geometry callbacks for analytic shapes (single rays only: illum traces rays one at a time).
+void shape_bounds(const RTCBoundsFunctionArguments* args) {
+    auto* shape = static_cast<const AnalyticShape*>(args->geometryUserPtr);
+    Bounds3f b = shape->bounds();
     args->bounds_o->lower_x = b.lo.x;
     args->bounds_o->lower_y = b.lo.y;
     args->bounds_o->lower_z = b.lo.z;
@@ -30,32 +53,47 @@ void disk_bounds(const RTCBoundsFunctionArguments* args) {
     args->bounds_o->upper_z = b.hi.z;
 }
 
-void disk_intersect(const RTCIntersectFunctionNArguments* args) {
+// The nearest crossing that passes the alpha test; pbrt-v4 continues the ray past a rejected one, so a
+// clipped or cut-out near side shows the far side.
+void shape_intersect(const RTCIntersectFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
-    auto* disk = static_cast<const DiskShape*>(args->geometryUserPtr);
+    auto* shape = static_cast<const AnalyticShape*>(args->geometryUserPtr);
     auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
     Ray ray{{rh->ray.org_x, rh->ray.org_y, rh->ray.org_z},
             {rh->ray.dir_x, rh->ray.dir_y, rh->ray.dir_z},
             rh->ray.tfar};
-    auto t = disk->intersect(ray);
-    if (!t || *t <= rh->ray.tnear) return;
-    rh->ray.tfar = *t;
-    rh->hit.u = 0;
-    rh->hit.v = 0;
-    rh->hit.Ng_x = rh->hit.Ng_y = 0;
-    rh->hit.Ng_z = 1;
-    rh->hit.primID = args->primID;
-    rh->hit.geomID = args->geomID;
-    rh->hit.instID[0] = args->context->instID[0];
+    Crossing c[2];
+    int n = shape->crossings(ray, rh->ray.tnear, rh->ray.tfar, c);
+    for (int i = 0; i < n; ++i) {
+        float t = float(c[i].t);
+        if (!(t > rh->ray.tnear && t < rh->ray.tfar) || !shape_keeps(*shape, c[i], rh->ray, args->geomID))
+            continue;
+        rh->ray.tfar = t;
+        rh->hit.u = 0;
+        rh->hit.v = 0;
+        rh->hit.Ng_x = rh->hit.Ng_y = 0;
+        rh->hit.Ng_z = 1;
+        rh->hit.primID = args->primID;
+        rh->hit.geomID = args->geomID;
+        rh->hit.instID[0] = args->context->instID[0];
+        return;
+    }
 }
 
-void disk_occluded(const RTCOccludedFunctionNArguments* args) {
+void shape_occluded(const RTCOccludedFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
-    auto* disk = static_cast<const DiskShape*>(args->geometryUserPtr);
+    auto* shape = static_cast<const AnalyticShape*>(args->geometryUserPtr);
     auto* r = reinterpret_cast<RTCRay*>(args->ray);
     Ray ray{{r->org_x, r->org_y, r->org_z}, {r->dir_x, r->dir_y, r->dir_z}, r->tfar};
-    auto t = disk->intersect(ray);
-    if (t && *t > r->tnear) r->tfar = -std::numeric_limits<float>::infinity();
+    Crossing c[2];
+    int n = shape->crossings(ray, r->tnear, r->tfar, c);
+    for (int i = 0; i < n; ++i) {
+        float t = float(c[i].t);
+        if (t > r->tnear && t < r->tfar && shape_keeps(*shape, c[i], *r, args->geomID)) {
+            r->tfar = -std::numeric_limits<float>::infinity();
+            return;
+        }
+    }
 }
 
 RTCRay to_embree(const Ray& ray) {
@@ -169,20 +207,7 @@ void Accelerator::alpha_filter(const RTCFilterFunctionNArguments* args) {
     } else {
         sh.uv = {b1 + b2, b2}; // the default (0,0), (1,0), (1,1) parameterisation
     }
-    float a = cut->alpha->evaluate(sh);
-    if (a >= 1) return;
-    if (a <= 0) {
-        args->valid[0] = 0;
-        return;
-    }
-    auto bits = [](float f) {
-        std::uint32_t u;
-        std::memcpy(&u, &f, sizeof u);
-        return u;
-    };
-    std::uint64_t key = hash(bits(r->org_x), bits(r->org_y), bits(r->org_z), bits(r->dir_x), bits(r->dir_y),
-                             bits(r->dir_z), tri);
-    if (float(key >> 40) * 0x1p-24f > a) args->valid[0] = 0;
+    if (!alpha_keeps(cut->alpha->evaluate(sh), *r, h->geomID, tri)) args->valid[0] = 0;
 }
 
 std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
@@ -216,41 +241,34 @@ std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Ma
     return attach(geom, std::move(r));
 }
 
-Accelerator::Record Accelerator::single_shape_record(Kind kind, const Material* material,
-                                                     const Light* light) {
+std::uint32_t Accelerator::add_shape(std::unique_ptr<AnalyticShape> shape, const Material* material,
+                                     const Light* light, bool native_sphere) {
+    (building_ ? building_->bounds : bounds_).extend(shape->bounds());
     Record r;
-    r.kind = kind;
     r.material = material;
-    if (light) r.lights.push_back(light);
-    return r;
-}
-
-std::uint32_t Accelerator::add_sphere(std::unique_ptr<SphereShape> sphere, const Material* material,
-                                      const Light* light) {
-    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-    auto* v = static_cast<float*>(
-        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
-    v[0] = sphere->center().x;
-    v[1] = sphere->center().y;
-    v[2] = sphere->center().z;
-    v[3] = sphere->radius();
-    (building_ ? building_->bounds : bounds_).extend(sphere->bounds());
-    Record r = single_shape_record(Kind::Sphere, material, light);
-    r.sphere = std::move(sphere);
-    return attach(geom, std::move(r));
-}
-
-std::uint32_t Accelerator::add_disk(std::unique_ptr<DiskShape> disk, const Material* material,
-                                    const Light* light) {
-    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(geom, 1);
-    rtcSetGeometryUserData(geom, disk.get());
-    rtcSetGeometryBoundsFunction(geom, disk_bounds, nullptr);
-    rtcSetGeometryIntersectFunction(geom, disk_intersect);
-    rtcSetGeometryOccludedFunction(geom, disk_occluded);
-    (building_ ? building_->bounds : bounds_).extend(disk->bounds());
-    Record r = single_shape_record(Kind::Disk, material, light);
-    r.disk = std::move(disk);
+    if (light) r.lights.push_back(light); // one primitive, so at most one area light
+    RTCGeometry geom;
+    auto* sphere = dynamic_cast<const SphereShape*>(shape.get());
+    if (native_sphere && sphere && sphere->is_round()) {
+        geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                              RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+        Point3f c = sphere->center();
+        v[0] = c.x;
+        v[1] = c.y;
+        v[2] = c.z;
+        v[3] = sphere->world_radius();
+        r.kind = Kind::NativeSphere;
+    } else {
+        geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(geom, 1);
+        rtcSetGeometryUserData(geom, shape.get());
+        rtcSetGeometryBoundsFunction(geom, shape_bounds, nullptr);
+        rtcSetGeometryIntersectFunction(geom, shape_intersect);
+        rtcSetGeometryOccludedFunction(geom, shape_occluded);
+        r.kind = Kind::Analytic;
+    }
+    r.shape = std::move(shape);
     return attach(geom, std::move(r));
 }
 
@@ -303,11 +321,9 @@ void Accelerator::fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ra
     case Kind::Mesh:
         rec.mesh->fill_hit(rh.hit.primID, rh.hit.u, rh.hit.v, t, ray, hit);
         break;
-    case Kind::Sphere:
-        rec.sphere->fill_hit(t, ray, hit);
-        break;
-    case Kind::Disk:
-        rec.disk->fill_hit(t, ray, hit);
+    case Kind::NativeSphere:
+    case Kind::Analytic:
+        rec.shape->fill_hit(t, ray, hit);
         break;
     case Kind::Instance:
         break; // never hit itself: Embree reports the instanced geometry
@@ -338,8 +354,7 @@ bool Accelerator::occluded(const Ray& ray) const {
 }
 
 const TriangleMesh* Accelerator::mesh(std::uint32_t id) const { return records_.at(id).mesh.get(); }
-const SphereShape* Accelerator::sphere(std::uint32_t id) const { return records_.at(id).sphere.get(); }
-const DiskShape* Accelerator::disk(std::uint32_t id) const { return records_.at(id).disk.get(); }
+const AnalyticShape* Accelerator::shape(std::uint32_t id) const { return records_.at(id).shape.get(); }
 
 std::size_t Accelerator::triangle_count() const {
     std::size_t n = 0;

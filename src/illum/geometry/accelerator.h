@@ -1,6 +1,6 @@
-// Ray traversal by Embree 3: triangle meshes (Embree triangles), spheres (Embree sphere points) and disks
-// (Embree user geometry). The accelerator owns the shapes and knows, per geometry, its material and the
-// area light of each primitive.
+// Ray traversal by Embree 3: triangle meshes (Embree triangles), pbrt's analytic shapes (sphere, disk,
+// cylinder) as Embree user geometry intersected in object space. The accelerator owns the shapes and knows,
+// per geometry, its material and the area light of each primitive.
 #pragma once
 
 #include <atomic>
@@ -10,8 +10,7 @@
 
 #include <embree3/rtcore.h>
 
-#include "illum/geometry/disk.h"
-#include "illum/geometry/sphere.h"
+#include "illum/geometry/analytic_shape.h"
 #include "illum/geometry/surface_hit.h"
 #include "illum/geometry/triangle_mesh.h"
 #include "illum/texture/texture.h"
@@ -28,12 +27,15 @@ public:
     // Each add returns the geometry id. `lights` has one entry per primitive (null where it does not
     // emit) or is empty when no primitive emits.
     // alpha (optional): a cut-out; where it is below 1 a hit is kept with probability alpha (pbrt-v4's
-    // stochastic alpha test, deterministic per ray), so alpha 0 is a hole.
+    // stochastic alpha test, deterministic per ray and surface crossing), so alpha 0 is a hole.
     std::uint32_t add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
                            std::vector<const Light*> lights, const FloatTexture* alpha = nullptr);
-    std::uint32_t add_sphere(std::unique_ptr<SphereShape> sphere, const Material* material,
-                             const Light* light);
-    std::uint32_t add_disk(std::unique_ptr<DiskShape> disk, const Material* material, const Light* light);
+    // A sphere, disk or cylinder (its cut-out, if any, is the shape's alpha()) as Embree user geometry.
+    // native_sphere: a whole round sphere (SphereShape::is_round()) becomes an Embree sphere point
+    // instead. Only bench/shape_bench.cpp asks for it: the user geometry measured faster
+    // (docs/performance.md).
+    std::uint32_t add_shape(std::unique_ptr<AnalyticShape> shape, const Material* material,
+                            const Light* light, bool native_sphere = false);
     // Object instancing (pbrt's ObjectBegin/ObjectInstance): between begin_prototype() and end_prototype()
     // the add_* calls build a prototype (an Embree scene of its own, in instance space); add_instance()
     // places it in the world any number of times at the cost of one Embree instance each.
@@ -52,15 +54,14 @@ public:
 
     Bounds3f bounds() const { return bounds_; }
     const TriangleMesh* mesh(std::uint32_t geom_id) const;
-    const SphereShape* sphere(std::uint32_t geom_id) const;
-    const DiskShape* disk(std::uint32_t geom_id) const;
+    const AnalyticShape* shape(std::uint32_t geom_id) const;
     // Triangles stored (each prototype's once, however often it is instanced) and instances placed.
     std::size_t triangle_count() const;
     std::size_t instance_count() const;
     std::size_t geometry_count() const { return records_.size(); }
 
 private:
-    enum class Kind : std::uint8_t { Mesh, Sphere, Disk, Instance };
+    enum class Kind : std::uint8_t { Mesh, NativeSphere, Analytic, Instance };
     struct AlphaCutout {
         const TriangleMesh* mesh;
         const FloatTexture* alpha;
@@ -68,8 +69,7 @@ private:
     struct Record {
         Kind kind = Kind::Mesh;
         std::unique_ptr<TriangleMesh> mesh;
-        std::unique_ptr<SphereShape> sphere;
-        std::unique_ptr<DiskShape> disk;
+        std::unique_ptr<AnalyticShape> shape;
         const Material* material = nullptr;
         std::vector<const Light*> lights;
         std::unique_ptr<AlphaCutout> cutout; // owned here; Embree holds a pointer to it
@@ -84,8 +84,6 @@ private:
     // Fills the hit of an Embree hit on the geometry of `rec` along `ray` (in that geometry's space).
     static void fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit);
     static void alpha_filter(const RTCFilterFunctionNArguments* args);
-    // A sphere's or disk's record: one primitive, so at most one area light.
-    static Record single_shape_record(Kind kind, const Material* material, const Light* light);
     std::uint32_t attach(RTCGeometry geom, Record record);
 
     RTCDevice device_ = nullptr;

@@ -1,72 +1,65 @@
 #include "illum/geometry/disk.h"
 
+#include <algorithm>
+
 #include "illum/math/warp.h"
 
 namespace illum {
 
 DiskShape::DiskShape(const Transform& world_from_object, float height, float radius, float inner_radius,
-                     bool flip_normal)
-    : world_from_object_(world_from_object), object_from_world_(world_from_object.inverse()), height_(height),
-      radius_(radius), inner_radius_(inner_radius), flip_(flip_normal) {
-    // Area under an affine map scales by |T(x) × T(y)|.
-    Vector3f ex = world_from_object_(Vector3f{1, 0, 0}), ey = world_from_object_(Vector3f{0, 1, 0});
-    area_ = kPi * (radius_ * radius_ - inner_radius_ * inner_radius_) * length(cross(ex, ey));
-    normal_ = normalize(world_from_object_(Normal3f{0, 0, 1}));
-    if (flip_) normal_ = -normal_;
+                     bool flip_normal, float phimax)
+    : AnalyticShape(world_from_object, flip_normal), height_(height), radius_(radius),
+      inner_radius_(inner_radius), phimax_(std::clamp(double(phimax), 0.0, 2 * kPiD)) {
+    init_area();
 }
 
-Bounds3f DiskShape::bounds() const {
-    Bounds3f b;
-    for (float x : {-radius_, radius_})
-        for (float y : {-radius_, radius_}) b.extend(world_from_object_(Point3f{x, y, height_}));
-    return b;
+// The plane z = height: t = (height - o_z) / d_z.
+int DiskShape::roots(Vec3d o, Vec3d d, double t[2]) const {
+    if (d.z == 0) return 0;
+    t[0] = (height_ - o.z) / d.z;
+    return 1;
 }
 
-std::optional<float> DiskShape::intersect(const Ray& ray) const {
-    Point3f o = object_from_world_(ray.o);
-    Vector3f d = object_from_world_(ray.d);
-    if (d.z == 0) return std::nullopt;
-    float t = (height_ - o.z) / d.z;
-    if (!(t > 0 && t < ray.tmax)) return std::nullopt;
-    Point3f p = o + d * t;
-    float r2 = p.x * p.x + p.y * p.y;
-    if (r2 > radius_ * radius_ || r2 < inner_radius_ * inner_radius_) return std::nullopt;
-    return t;
+bool DiskShape::inside_clip(Vec3d p) const {
+    double r2 = p.x * p.x + p.y * p.y;
+    if (r2 > radius_ * radius_ || r2 < inner_radius_ * inner_radius_) return false;
+    return phimax_ >= 2 * kPiD || azimuth(p.x, p.y) <= phimax_;
 }
 
-void DiskShape::fill_hit(float t, const Ray& ray, SurfaceHit* hit) const {
-    Point3f po = object_from_world_(ray.o) + object_from_world_(ray.d) * t;
-    po.z = height_; // exactly on the plane in object space
-    hit->p = world_from_object_(po);
-    hit->p_error = abs(hit->p) * gamma_bound(6) + abs(Vector3f(po)) * gamma_bound(3);
-    hit->t = t;
-    hit->wo = normalize(-ray.d);
-    hit->n = normal_;
-    hit->ns = normal_;
-    float r = std::sqrt(po.x * po.x + po.y * po.y);
-    float phi = std::atan2(po.y, po.x);
-    if (phi < 0) phi += 2 * kPi;
-    hit->uv = {phi / (2 * kPi), (radius_ - r) / (radius_ - inner_radius_)};
-    hit->dpdu = world_from_object_(Vector3f{-po.y, po.x, 0} * (2 * kPi));
-}
-
-ShapeSample DiskShape::sample_area(Point2f u) const {
-    // Uniform over the annulus: r = sqrt(ri² + u (ro² - ri²)).
-    Point2f d = sample_uniform_disk_concentric(u);
-    float rho2 = d.x * d.x + d.y * d.y;
-    float r =
-        std::sqrt(inner_radius_ * inner_radius_ + rho2 * (radius_ * radius_ - inner_radius_ * inner_radius_));
-    float scale = rho2 > 0 ? r / std::sqrt(rho2) : 0;
-    Point3f po{d.x * scale, d.y * scale, height_};
-    ShapeSample s;
-    s.p = world_from_object_(po);
-    s.p_error = abs(s.p) * gamma_bound(6);
-    s.n = normal_;
-    float phi = std::atan2(po.y, po.x);
-    if (phi < 0) phi += 2 * kPi;
-    s.uv = {phi / (2 * kPi), (radius_ - r) / std::max(radius_ - inner_radius_, 1e-20f)};
-    s.pdf = 1 / area_;
+AnalyticShape::SurfacePoint DiskShape::surface_at(Vec3d p) const {
+    SurfacePoint s;
+    s.p = {p.x, p.y, height_}; // exactly on the plane
+    s.n = {0, 0, 1};
+    double rho = std::sqrt(p.x * p.x + p.y * p.y);
+    s.uv = {float(azimuth(p.x, p.y) / phimax_), float((radius_ - rho) / (radius_ - inner_radius_))};
+    s.dpdu = Vec3d{-p.y, p.x, 0} * phimax_;
     return s;
+}
+
+// Uniform over the annular sector: ρ² uniform in [ri², r²], φ uniform in [0, φmax] (the area element is
+// ρ dρ dφ = d(ρ²)/2 dφ). The whole annulus keeps the concentric map's lower distortion, its radius
+// remapped the same way.
+Vec3d DiskShape::sample_object(Point2f u) const {
+    double ri2 = inner_radius_ * inner_radius_, r2 = radius_ * radius_;
+    if (phimax_ >= 2 * kPiD) {
+        Point2f d = sample_uniform_disk_concentric(u);
+        double rho2 = double(d.x) * d.x + double(d.y) * d.y;
+        double rho = std::sqrt(ri2 + rho2 * (r2 - ri2)), k = rho2 > 0 ? rho / std::sqrt(rho2) : 0;
+        return {d.x * k, d.y * k, height_};
+    }
+    double rho = std::sqrt(ri2 + u.x * (r2 - ri2)), phi = u.y * phimax_;
+    return {rho * std::cos(phi), rho * std::sin(phi), height_};
+}
+
+double DiskShape::object_area() const {
+    return phimax_ / 2 * (radius_ * radius_ - inner_radius_ * inner_radius_);
+}
+
+Bounds3f DiskShape::object_bounds() const {
+    Bounds3f b;
+    b.extend(Point3f(float(-radius_), float(-radius_), float(height_)));
+    b.extend(Point3f(float(radius_), float(radius_), float(height_)));
+    return b;
 }
 
 } // namespace illum

@@ -1,32 +1,28 @@
-// pbrt's disk: in object space the annulus inner_radius <= r <= radius at z = height, normal +z; placed
-// in the world by an affine transform. Sampled by area.
+// pbrt's disk: in object space the annulus inner_radius <= ρ <= radius at z = height, over the azimuth
+// 0 <= φ <= φmax, normal +z (PBR 4th ed. §6.5); placed in the world by any affine transform.
+// uv = (φ / φmax, (radius - ρ) / (radius - inner_radius)). Sampled by area.
 #pragma once
 
-#include "illum/geometry/shape.h"
-#include "illum/geometry/surface_hit.h"
-#include "illum/math/transform.h"
+#include "illum/geometry/analytic_shape.h"
 
 namespace illum {
 
-class DiskShape final : public AreaShape {
+class DiskShape final : public AnalyticShape {
 public:
+    // phimax in radians, in (0, 2π].
     DiskShape(const Transform& world_from_object, float height, float radius, float inner_radius,
-              bool flip_normal);
+              bool flip_normal, float phimax = 2 * kPi);
 
-    float area() const override { return area_; }
-    Bounds3f bounds() const override;
-    ShapeSample sample_area(Point2f u) const override;
-
-    // Ray-disk intersection; returns the hit distance or nothing.
-    std::optional<float> intersect(const Ray& ray) const;
-    void fill_hit(float t, const Ray& ray, SurfaceHit* hit) const;
+protected:
+    int roots(Vec3d o, Vec3d d, double t[2]) const override;
+    bool inside_clip(Vec3d p) const override;
+    SurfacePoint surface_at(Vec3d p) const override;
+    Vec3d sample_object(Point2f u) const override;
+    double object_area() const override;
+    Bounds3f object_bounds() const override;
 
 private:
-    Transform world_from_object_, object_from_world_;
-    float height_, radius_, inner_radius_;
-    bool flip_;
-    float area_;
-    Normal3f normal_; // world space, emitting side
+    double height_, radius_, inner_radius_, phimax_;
 };
 
 } // namespace illum

@@ -1,65 +1,87 @@
 #include "illum/geometry/sphere.h"
 
+#include <algorithm>
+
 #include "illum/math/frame.h"
-#include "illum/math/warp.h"
 
 namespace illum {
 
-Bounds3f SphereShape::bounds() const {
-    Bounds3f b;
-    Vector3f r{radius_, radius_, radius_};
-    b.extend(center_ - r);
-    b.extend(center_ + r);
-    return b;
+SphereShape::SphereShape(const Transform& world_from_object, float radius, float zmin, float zmax,
+                         float phimax, bool flip_normal)
+    : AnalyticShape(world_from_object, flip_normal), radius_(radius),
+      zmin_(std::clamp(double(std::min(zmin, zmax)), -radius_, radius_)),
+      zmax_(std::clamp(double(std::max(zmin, zmax)), -radius_, radius_)),
+      theta_zmin_(std::acos(std::clamp(zmin_ / radius_, -1.0, 1.0))),
+      theta_zmax_(std::acos(std::clamp(zmax_ / radius_, -1.0, 1.0))),
+      phimax_(std::clamp(double(phimax), 0.0, 2 * kPiD)) {
+    full_ = zmin_ <= -radius_ && zmax_ >= radius_ && phimax_ >= 2 * kPiD;
+    init_area();
 }
 
-void SphereShape::reproject(Point3f* p, Vector3f* err) const {
-    Vector3f d = *p - center_;
-    float len = length(d);
-    if (len > 0) d = d * (radius_ / len);
-    *p = center_ + d;
-    *err = abs(d) * gamma_bound(5) + abs(Vector3f(center_)) * gamma_bound(1);
+SphereShape::SphereShape(Point3f center, float radius, bool flip_normal)
+    : SphereShape(Transform::translate(Vector3f(center)), radius, -radius, radius, 2 * kPi, flip_normal) {}
+
+Point3f SphereShape::center() const {
+    Vector3f err;
+    return to_world(Vec3d{}, &err);
 }
 
-Normal3f SphereShape::outward(Point3f p) const {
-    Normal3f n = normalize(Normal3f(p - center_));
-    return flip_ ? -n : n;
+// |o + t d|² = r²: a t² + 2 b t + c = 0 with a = d·d, b = o·d, c = o·o - r². The discriminant
+// b² - a c = a (r² - |o - (b/a) d|²) is formed from the ray's distance to the centre, which does not
+// cancel as b² - a c does for distant origins (Haines et al., Ray Tracing Gems ch. 7, 2019).
+int SphereShape::roots(Vec3d o, Vec3d d, double t[2]) const {
+    double a = dot(d, d), b = dot(o, d), c = dot(o, o) - radius_ * radius_;
+    if (a == 0) return 0;
+    Vec3d f = o - d * (b / a);
+    double disc = a * (radius_ * radius_ - dot(f, f));
+    return solve_quadratic(a, b, c, disc, t);
 }
 
-Point2f SphereShape::uv_at(Point3f p) const {
-    Vector3f d = normalize(p - center_);
-    return {spherical_phi(d) / (2 * kPi), spherical_theta(d) / kPi};
+bool SphereShape::inside_clip(Vec3d p) const {
+    if ((zmin_ > -radius_ && p.z < zmin_) || (zmax_ < radius_ && p.z > zmax_)) return false;
+    return phimax_ >= 2 * kPiD || azimuth(p.x, p.y) <= phimax_;
 }
 
-void SphereShape::fill_hit(float t, const Ray& ray, SurfaceHit* hit) const {
-    Point3f p = ray(t);
-    reproject(&p, &hit->p_error);
-    hit->p = p;
-    hit->t = t;
-    hit->wo = normalize(-ray.d);
-    hit->n = outward(p);
-    hit->ns = hit->n;
-    hit->uv = uv_at(p);
-    Vector3f d = p - center_;
-    hit->dpdu = Vector3f{-d.y, d.x, 0} * (2 * kPi);
-}
-
-ShapeSample SphereShape::sample_area(Point2f u) const {
-    ShapeSample s;
-    s.p = center_ + sample_uniform_sphere(u) * radius_;
-    reproject(&s.p, &s.p_error);
-    s.n = outward(s.p);
-    s.uv = uv_at(s.p);
-    s.pdf = 1 / area();
+AnalyticShape::SurfacePoint SphereShape::surface_at(Vec3d p) const {
+    double len = length(p);
+    SurfacePoint s;
+    s.n = len > 0 ? p * (1 / len) : Vec3d{0, 0, 1};
+    s.p = s.n * radius_;
+    double phi = azimuth(s.p.x, s.p.y), theta = std::acos(std::clamp(s.n.z, -1.0, 1.0));
+    s.uv = {float(phi / phimax_), float((theta - theta_zmin_) / (theta_zmax_ - theta_zmin_))};
+    s.dpdu = Vec3d{-s.p.y, s.p.x, 0} * phimax_;
     return s;
 }
 
-std::optional<ShapeSample> SphereShape::sample(const ShapeSampleContext& ctx, Point2f u) const {
-    float dc2 = distance_squared(ctx.p, center_);
-    float r2 = radius_ * radius_;
-    if (dc2 <= r2 * 1.0001f) return AreaShape::sample(ctx, u);
+// Archimedes: the area of a sphere between two planes is 2π r h, so z uniform in [zmin, zmax] and φ
+// uniform in [0, φmax] is uniform by area; the area is φmax r (zmax - zmin) (PBR 4th ed. §6.2.3).
+Vec3d SphereShape::sample_object(Point2f u) const {
+    double z = zmin_ + u.x * (zmax_ - zmin_), phi = u.y * phimax_;
+    double rho = std::sqrt(std::max(0.0, radius_ * radius_ - z * z));
+    return {rho * std::cos(phi), rho * std::sin(phi), z};
+}
 
-    // Cone of directions that hit the sphere: sin θmax = r / d_c.
+double SphereShape::object_area() const { return phimax_ * radius_ * (zmax_ - zmin_); }
+
+Bounds3f SphereShape::object_bounds() const {
+    Bounds3f b;
+    b.extend(Point3f(float(-radius_), float(-radius_), float(zmin_)));
+    b.extend(Point3f(float(radius_), float(radius_), float(zmax_)));
+    return b;
+}
+
+bool SphereShape::cone_sampling(Point3f p) const {
+    if (!is_round()) return false;
+    float r = world_radius();
+    return distance_squared(p, center()) > r * r * 1.0001f;
+}
+
+std::optional<ShapeSample> SphereShape::sample(const ShapeSampleContext& ctx, Point2f u) const {
+    if (!cone_sampling(ctx.p)) return AreaShape::sample(ctx, u);
+    Point3f c = center();
+    float dc2 = distance_squared(ctx.p, c), r2 = sqr(world_radius());
+
+    // Cone of directions that hit the sphere: sin θmax = r / d_c (PBR 4th ed. §6.2.4).
     float sin2_max = r2 / dc2, cos_max = safe_sqrt(1 - sin2_max), one_minus_cos_max = 1 - cos_max;
     float cos_theta = (cos_max - 1) * u.x + 1;
     float sin2_theta = 1 - cos_theta * cos_theta;
@@ -68,28 +90,23 @@ std::optional<ShapeSample> SphereShape::sample(const ShapeSampleContext& ctx, Po
         cos_theta = std::sqrt(1 - sin2_theta);
         one_minus_cos_max = sin2_max / 2;
     }
-    // The point on the sphere: angle α at the center from the direction towards the receiver.
+    // The point on the sphere: angle α at the centre from the direction towards the receiver.
     float cos_alpha = sin2_theta / std::sqrt(sin2_max) + cos_theta * safe_sqrt(1 - sin2_theta / sin2_max);
     float sin_alpha = safe_sqrt(1 - cos_alpha * cos_alpha);
     float phi = u.y * 2 * kPi;
-    Frame frame = Frame::from_z(normalize(center_ - ctx.p));
+    Frame frame = Frame::from_z(normalize(c - ctx.p));
+    // +z of the frame points from the receiver to the centre; the point faces the receiver, at -z.
     Vector3f w = spherical_direction(sin_alpha, cos_alpha, phi);
-    // w is in a frame whose +z points from the center towards... the receiver is at -z, so negate.
     Vector3f n_world = frame.to_world(Vector3f{-w.x, -w.y, -w.z});
-    ShapeSample s;
-    s.p = center_ + n_world * radius_;
-    reproject(&s.p, &s.p_error);
-    s.n = flip_ ? Normal3f(-n_world) : Normal3f(n_world);
-    s.uv = uv_at(s.p);
+    ShapeSample s = world_sample(to_object(c + n_world * world_radius()));
     s.pdf = 1 / (2 * kPi * one_minus_cos_max);
     return s;
 }
 
 float SphereShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit, Normal3f n_hit) const {
-    float dc2 = distance_squared(ctx.p, center_);
-    float r2 = radius_ * radius_;
-    if (dc2 <= r2 * 1.0001f) return AreaShape::pdf(ctx, wi, p_hit, n_hit);
-    float sin2_max = r2 / dc2, cos_max = safe_sqrt(1 - sin2_max), one_minus_cos_max = 1 - cos_max;
+    if (!cone_sampling(ctx.p)) return AnalyticShape::pdf(ctx, wi, p_hit, n_hit);
+    float sin2_max = sqr(world_radius()) / distance_squared(ctx.p, center());
+    float one_minus_cos_max = 1 - safe_sqrt(1 - sin2_max);
     if (sin2_max < 0.00068523f) one_minus_cos_max = sin2_max / 2;
     return 1 / (2 * kPi * one_minus_cos_max);
 }

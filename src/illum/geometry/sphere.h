@@ -1,38 +1,48 @@
-// A sphere in world space (center, radius). Emitting spheres are sampled uniformly inside the cone
-// they subtend from the receiver (PBR 4th ed. §6.2.4); from inside, uniformly by area.
+// pbrt's sphere: in object space the sphere of radius r about the origin, clipped to zmin <= z <= zmax
+// and to the azimuth 0 <= φ <= φmax (PBR 4th ed. §6.2), placed in the world by any affine transform.
+// uv = (φ / φmax, (θ - θ(zmin)) / (θ(zmax) - θ(zmin))), θ = acos(z / r); the normal points outwards.
+// A full sphere under a similarity transform without a cut-out is sampled uniformly inside the cone it
+// subtends from a receiver outside it (§6.2.4); every other case by area.
 #pragma once
 
-#include "illum/geometry/shape.h"
-#include "illum/geometry/surface_hit.h"
+#include "illum/geometry/analytic_shape.h"
 
 namespace illum {
 
-class SphereShape final : public AreaShape {
+class SphereShape final : public AnalyticShape {
 public:
-    SphereShape(Point3f center, float radius, bool flip_normal)
-        : center_(center), radius_(radius), flip_(flip_normal) {}
+    // phimax in radians, in (0, 2π]; zmin < zmax are clamped to [-r, r].
+    SphereShape(const Transform& world_from_object, float radius, float zmin, float zmax, float phimax,
+                bool flip_normal);
+    // A whole sphere in world space.
+    SphereShape(Point3f center, float radius, bool flip_normal);
 
-    Point3f center() const { return center_; }
-    float radius() const { return radius_; }
+    // Whether the sphere is whole (no z or φ clipping).
+    bool is_full() const { return full_; }
+    // Whether it is a whole round sphere in the world (a similarity transform) without a cut-out: then
+    // it can be cone sampled, and Embree's native sphere could stand for it.
+    bool is_round() const { return full_ && is_similarity() && !alpha(); }
+    // World-space centre and radius (meaningful under a similarity transform).
+    Point3f center() const;
+    float world_radius() const { return float(scale() * radius_); }
 
-    float area() const override { return 4 * kPi * radius_ * radius_; }
-    Bounds3f bounds() const override;
-    ShapeSample sample_area(Point2f u) const override;
     std::optional<ShapeSample> sample(const ShapeSampleContext& ctx, Point2f u) const override;
     float pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit, Normal3f n_hit) const override;
 
-    // Fills a hit at ray parameter t (the point is reprojected onto the surface).
-    void fill_hit(float t, const Ray& ray, SurfaceHit* hit) const;
+protected:
+    int roots(Vec3d o, Vec3d d, double t[2]) const override;
+    bool inside_clip(Vec3d p) const override;
+    SurfacePoint surface_at(Vec3d p) const override;
+    Vec3d sample_object(Point2f u) const override;
+    double object_area() const override;
+    Bounds3f object_bounds() const override;
 
 private:
-    // Puts p on the surface exactly and bounds its error (γ_5 |p - c|).
-    void reproject(Point3f* p, Vector3f* err) const;
-    Normal3f outward(Point3f p) const;
-    Point2f uv_at(Point3f p) const;
+    // Whether sample() draws from the subtended cone for a receiver at p (else by area).
+    bool cone_sampling(Point3f p) const;
 
-    Point3f center_;
-    float radius_;
-    bool flip_;
+    double radius_, zmin_, zmax_, theta_zmin_, theta_zmax_, phimax_;
+    bool full_;
 };
 
 } // namespace illum

@@ -5,6 +5,7 @@
 #include "illum/bsdf/shared_bxdf_material.h"
 #include "illum/bsdf/textured_model_material.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -14,6 +15,9 @@
 #include <unordered_map>
 
 #include "illum/bsdf/pbrt_materials.h"
+#include "illum/geometry/cylinder.h"
+#include "illum/geometry/disk.h"
+#include "illum/geometry/sphere.h"
 #include "illum/image/image_io.h"
 #include "illum/light/diffuse_area_light.h"
 #include "illum/light/light_factory.h"
@@ -705,18 +709,45 @@ private:
         return float_param(s, "alpha", 1.0f);
     }
 
+    // Where a shape's parameter was written (the shape's own position when it was not).
+    static SourceLocation param_loc(const ShapeDesc& s, const char* name) {
+        const Param* p = s.params.find(name);
+        return p ? p->loc : s.loc;
+    }
+
+    // pbrt-v4's "phimax" in degrees, (0, 360], as radians.
+    static float phimax_of(const ShapeDesc& s) {
+        float phimax = s.params.get_float("phimax", 360);
+        if (!(phimax > 0 && phimax <= 360))
+            throw Error(param_loc(s, "phimax"),
+                        fmt::format("{} phimax must be in (0, 360], not {}", s.type, phimax));
+        return phimax * (kPi / 180);
+    }
+
+    // Outward normals flip under ReverseOrientation and under a transform that swaps handedness (pbrt-v4).
+    static bool flip_of(const ShapeDesc& s) {
+        return s.reverse_orientation != s.world_from_object.swaps_handedness();
+    }
+
+    // A sphere, disk or cylinder with its cut-out and its area light (one light for the whole shape,
+    // `power` normalised by its exact area).
+    void add_analytic_shape(const ShapeDesc& s, std::unique_ptr<AnalyticShape> shape) {
+        shape->set_alpha(alpha_of(s));
+        const Light* light = nullptr;
+        if (auto e = area_light_of(s)) {
+            scene_->lights.push_back(
+                std::make_unique<DiffuseAreaLight>(shape.get(), e->for_area(shape->area()), e->two_sided));
+            light = scene_->lights.back().get();
+        }
+        scene_->accelerator.add_shape(std::move(shape), resolve(s.material, s.loc), light);
+    }
+
     void build_shape(const ShapeDesc& s) {
         if (!s.world_from_object.matrix().is_finite()) throw Error(s.loc, "shape transform is not finite");
-        if (const Param* a = s.params.find("alpha")) {
-            // A constant alpha of 0 removes the shape (pbrt-v4 does the same). Meshes take any other alpha
-            // as a cut-out (add_mesh); the analytic shapes do not yet.
+        // A constant alpha of 0 removes the shape (pbrt-v4 does the same); any other alpha below 1 is a
+        // cut-out (alpha_of).
+        if (const Param* a = s.params.find("alpha"))
             if (a->type == ParamType::Float && s.params.get_float("alpha", 1) <= 0) return;
-            bool mesh = s.type == "trianglemesh" || s.type == "plymesh" || s.type == "bilinearmesh";
-            if (!mesh && !(a->type == ParamType::Float && s.params.get_float("alpha", 1) >= 1)) {
-                a->used = true;
-                unsupported(a->loc, fmt::format("\"alpha\" on a {} is not supported; it is opaque", s.type));
-            }
-        }
         if (s.type == "trianglemesh") {
             auto mesh = std::make_unique<TriangleMesh>();
             mesh->p = s.params.get_point3s("P");
@@ -747,42 +778,24 @@ private:
             add_mesh(s, std::move(mesh));
         } else if (s.type == "sphere") {
             float r = s.params.get_float("radius", 1);
-            if (!(r > 0)) throw Error(s.loc, "sphere radius must be positive");
-            for (const char* p : {"zmin", "zmax", "phimax"})
-                if (s.params.has(p)) {
-                    s.params.find(p)->used = true;
-                    unsupported(s.params.find(p)->loc,
-                                fmt::format("partial spheres (\"{}\") are rendered whole", p));
-                }
-            Point3f c = s.world_from_object(Point3f{0, 0, 0});
-            Vector3f ax = s.world_from_object(Vector3f{1, 0, 0}), ay = s.world_from_object(Vector3f{0, 1, 0}),
-                     az = s.world_from_object(Vector3f{0, 0, 1});
-            float sx = length(ax), sy = length(ay), sz = length(az);
-            if (std::abs(sx - sy) > 1e-4f * sx || std::abs(sx - sz) > 1e-4f * sx)
-                unsupported(s.loc, "a non-uniformly scaled sphere is rendered with its mean scale");
-            float radius = r * (sx + sy + sz) / 3;
-            bool flip = s.reverse_orientation != s.world_from_object.swaps_handedness();
-            auto sphere = std::make_unique<SphereShape>(c, radius, flip);
-            const Light* light = nullptr;
-            if (auto e = area_light_of(s)) {
-                scene_->lights.push_back(std::make_unique<DiffuseAreaLight>(
-                    sphere.get(), e->for_area(4 * kPi * radius * radius), e->two_sided));
-                light = scene_->lights.back().get();
-            }
-            scene_->accelerator.add_sphere(std::move(sphere), resolve(s.material, s.loc), light);
+            if (!(r > 0)) throw Error(param_loc(s, "radius"), "sphere radius must be positive");
+            float zmin = s.params.get_float("zmin", -r), zmax = s.params.get_float("zmax", r);
+            // pbrt-v4 orders zmin, zmax and clamps them to [-r, r]; an empty range is an error here.
+            float z0 = std::clamp(std::min(zmin, zmax), -r, r), z1 = std::clamp(std::max(zmin, zmax), -r, r);
+            if (!(z0 < z1))
+                throw Error(
+                    param_loc(s, s.params.has("zmin") ? "zmin" : "zmax"),
+                    fmt::format("sphere zmin ({}) and zmax ({}) leave nothing of the sphere of radius {}",
+                                zmin, zmax, r));
+            add_analytic_shape(s, std::make_unique<SphereShape>(s.world_from_object, r, zmin, zmax,
+                                                                phimax_of(s), flip_of(s)));
         } else if (s.type == "disk") {
             float r = s.params.get_float("radius", 1), ri = s.params.get_float("innerradius", 0);
             float h = s.params.get_float("height", 0);
-            if (!(r > 0) || ri < 0 || ri >= r) throw Error(s.loc, "disk needs 0 <= innerradius < radius");
-            bool flip = s.reverse_orientation != s.world_from_object.swaps_handedness();
-            auto disk = std::make_unique<DiskShape>(s.world_from_object, h, r, ri, flip);
-            const Light* light = nullptr;
-            if (auto e = area_light_of(s)) {
-                scene_->lights.push_back(std::make_unique<DiffuseAreaLight>(
-                    disk.get(), e->for_area(kPi * (r * r - ri * ri)), e->two_sided));
-                light = scene_->lights.back().get();
-            }
-            scene_->accelerator.add_disk(std::move(disk), resolve(s.material, s.loc), light);
+            if (!(r > 0) || !(ri >= 0) || !(ri < r) || !std::isfinite(h))
+                throw Error(s.loc, "disk needs 0 <= innerradius < radius and a finite height");
+            add_analytic_shape(
+                s, std::make_unique<DiskShape>(s.world_from_object, h, r, ri, flip_of(s), phimax_of(s)));
         } else if (s.type == "plymesh") {
             std::string file = s.params.get_string("filename", "");
             if (file.empty()) throw Error(s.loc, "plymesh needs \"string filename\"");
@@ -839,33 +852,14 @@ private:
                 mesh->uv = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
             add_mesh(s, std::move(mesh));
         } else if (s.type == "cylinder") {
-            // Tessellated: 256 segments around, one along z; normals from the exact surface, so shading is
-            // smooth and only the silhouette and the area (0.01% short) are approximate.
             float r = s.params.get_float("radius", 1), z0 = s.params.get_float("zmin", -1),
-                  z1 = s.params.get_float("zmax", 1), phimax = s.params.get_float("phimax", 360);
-            if (!(r > 0) || !(z1 != z0) || !(phimax > 0 && phimax <= 360))
-                throw Error(s.loc, "cylinder needs radius > 0, zmin != zmax and 0 < phimax <= 360");
-            if (z0 > z1) std::swap(z0, z1);
-            constexpr int kSegments = 256;
-            int n = std::max(3, int(std::ceil(kSegments * phimax / 360)));
-            auto mesh = std::make_unique<TriangleMesh>();
-            float pm = phimax * kPi / 180;
-            for (int i = 0; i <= n; ++i) {
-                float phi = pm * float(i) / float(n), c = std::cos(phi), sn = std::sin(phi);
-                for (int j = 0; j < 2; ++j) {
-                    mesh->p.push_back({r * c, r * sn, j ? z1 : z0});
-                    // Outward, or inward under ReverseOrientation (pbrt-v4's analytic cylinder); given
-                    // as normals, they also fix the emitting side.
-                    float o = s.reverse_orientation ? -1.0f : 1.0f;
-                    mesh->n.push_back(Normal3f(o * c, o * sn, 0));
-                    mesh->uv.push_back({float(i) / float(n), float(j)});
-                }
-            }
-            for (int i = 0; i < n; ++i) {
-                std::uint32_t a = 2 * i, b = 2 * (i + 1), c = a + 1, d = b + 1; // p00 p10 p01 p11
-                mesh->indices.insert(mesh->indices.end(), {a, b, d, a, d, c});
-            }
-            add_mesh(s, std::move(mesh));
+                  z1 = s.params.get_float("zmax", 1);
+            if (!(r > 0)) throw Error(param_loc(s, "radius"), "cylinder radius must be positive");
+            if (!(z0 != z1) || !std::isfinite(z0) || !std::isfinite(z1))
+                throw Error(param_loc(s, s.params.has("zmin") ? "zmin" : "zmax"),
+                            "cylinder needs finite zmin != zmax");
+            add_analytic_shape(
+                s, std::make_unique<CylinderShape>(s.world_from_object, r, z0, z1, phimax_of(s), flip_of(s)));
         } else if (s.type == "loopsubdiv" || s.type == "curve" || s.type == "cone" ||
                    s.type == "paraboloid" || s.type == "hyperboloid") {
             unsupported(s.loc, fmt::format("shape \"{}\" is not supported yet and is skipped", s.type));
