@@ -113,11 +113,11 @@ struct NamedRgb {
 };
 const NamedRgb kNamed[] = {
     // Glasses: the refractive index at 550 nm from the Schott Sellmeier coefficients (pbrt-v4 renders
-    // their dispersion; an RGB renderer cannot).
+    // their dispersion; an RGB renderer cannot). pbrt-v4 binds the names "glass-F5", "glass-F10" and
+    // "glass-F11" to its tables of the dense flints SF5, SF10 and SF11, so they are those glasses here too.
     {"glass-BK7", Color3(1.5185f)},   {"glass-BAF10", Color3(1.6700f)}, {"glass-FK51A", Color3(1.4868f)},
-    {"glass-LASF9", Color3(1.8503f)}, {"glass-F5", Color3(1.6058f)},    {"glass-F10", Color3(1.6248f)},
-    {"glass-F11", Color3(1.6238f)},   {"glass-SF5", Color3(1.6755f)},   {"glass-SF10", Color3(1.7331f)},
-    {"glass-SF11", Color3(1.7899f)},
+    {"glass-LASF9", Color3(1.8503f)}, {"glass-F5", Color3(1.6755f)},    {"glass-F10", Color3(1.7331f)},
+    {"glass-F11", Color3(1.7899f)},
 };
 } // namespace
 

@@ -10,11 +10,21 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
     float eta_scale = 1; // radiance scaling by refraction, undone for Russian roulette
     bool specular_bounce = false;
     float prev_bsdf_pdf = 0; // solid-angle pdf of the BSDF sample that made `ray`
+    // A stochastic (layered) BSDF's sample carries no usable density: MIS weighs it with pdf() instead,
+    // evaluated only when the ray finds emission (a pdf() costs a random walk).
+    BSDF prev_bsdf;
+    Vector3f prev_wo, prev_wi;
+    auto bsdf_pdf_for_mis = [&] {
+        if (prev_bsdf) {
+            prev_bsdf_pdf = prev_bsdf.pdf(prev_wo, prev_wi).value;
+            prev_bsdf = BSDF();
+        }
+        return prev_bsdf_pdf;
+    };
     LightSampleContext prev_ctx;
     Sampler& sampler = tc.sampler;
 
     for (int depth = 0;;) {
-        tc.arena.reset(); // the previous vertex's BSDF is no longer needed
         SurfaceHit hit;
         if (!intersect(ray, &hit, tc)) {
             for (const Light* env : scene_.infinite_lights) {
@@ -25,7 +35,7 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
                 } else {
                     float p_light =
                         scene_.light_sampler.pmf(env) * env->pdf_li(prev_ctx, ray.d, nullptr).value;
-                    l += le * beta * power_heuristic(prev_bsdf_pdf, p_light);
+                    l += le * beta * power_heuristic(bsdf_pdf_for_mis(), p_light);
                 }
             }
             break;
@@ -39,11 +49,13 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
                 } else {
                     float p_light = scene_.light_sampler.pmf(hit.area_light) *
                                     hit.area_light->pdf_li(prev_ctx, ray.d, &hit).value;
-                    l += le * beta * power_heuristic(prev_bsdf_pdf, p_light);
+                    l += le * beta * power_heuristic(bsdf_pdf_for_mis(), p_light);
                 }
             }
         }
 
+        prev_bsdf = BSDF();
+        tc.arena.reset(); // the previous vertex's BSDF is no longer needed
         BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.arena) : BSDF();
         if (!bsdf) {
             // A pure interface (no material): the path continues straight through, no scattering event. Like
@@ -96,7 +108,9 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
             // this sample is weighed with pdf() as next-event estimation is. (Weighing it 0 while
             // next-event estimation weighs by pdf() loses energy.) A delta sample (the coat's mirror
             // reflection) keeps full weight: next-event estimation cannot produce it.
-            prev_bsdf_pdf = bsdf.pdf(wo, bs->wi).value;
+            prev_bsdf = bsdf;
+            prev_wo = wo;
+            prev_wi = bs->wi;
         }
         if (bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
         prev_ctx = ctx;
