@@ -86,5 +86,43 @@ Shape "trianglemesh" "point3 P" [-3 -3 1 3 -3 1 3 3 1 -3 3 1] "integer indices" 
     EXPECT_NEAR(cut.mean, expected, 4.5 * std::hypot(cut.standard_error, 0.6 * open.standard_error) + 1e-5);
 }
 
+// Emitters with a cut-out do not emit where it removes them (pbrt-v4): an emitting square (mesh) and an
+// emitting disk (analytic) over the receiver, half of each cut away by a 0/1 checkerboard laid out so
+// that the receiver at the origin sees exactly half of the full irradiance. Both next-event estimation
+// (sample_li) and emission found by BSDF sampling (radiance) are masked: the path integrator's MIS
+// combines them, and the direct integrator's too.
+TEST(Alpha, CutOutEmittersDoNotEmitWhereCut) {
+    auto scene = [](const std::string& shape, const std::string& alpha) {
+        return test::irradiance_receiver(fmt::format(R"(
+Texture "checks" "float" "checkerboard" "float uscale" [2] "float vscale" [2] "float tex1" [1] "float tex2" [0]
+AttributeBegin
+  Material "diffuse" "rgb reflectance" [0 0 0]
+  AreaLightSource "diffuse" "rgb L" [1 1 1]
+  Translate 0 0 1
+  ReverseOrientation
+  {} {}
+AttributeEnd
+)",
+                                                     shape, alpha));
+    };
+    const std::string square =
+        R"(Shape "trianglemesh" "point3 P" [-1 -1 0 1 -1 0 1 1 0 -1 1 0] "integer indices" [0 1 2 0 2 3]
+    "point2 uv" [0 0 1 0 1 1 0 1])";
+    const std::string disk = R"(Shape "disk" "float radius" [1])";
+    for (const char* integrator : {"direct", "path"}) {
+        for (const std::string& shape : {square, disk}) {
+            test::RenderSetup s;
+            s.integrator = integrator;
+            s.spp = 64;
+            auto full = test::pixel_mean(test::render_pbrt(scene(shape, ""), s).image, 1);
+            auto half =
+                test::pixel_mean(test::render_pbrt(scene(shape, R"("texture alpha" "checks")"), s).image, 1);
+            EXPECT_NEAR(half.mean, 0.5 * full.mean,
+                        4.5 * std::hypot(half.standard_error, 0.5 * full.standard_error) + 1e-5)
+                << integrator << ": " << shape;
+        }
+    }
+}
+
 } // namespace
 } // namespace illum

@@ -1,9 +1,29 @@
 #include "illum/light/diffuse_area_light.h"
 
+#include <cstring>
+
 #include "illum/math/frame.h"
+#include "illum/math/rng.h"
 #include "illum/math/warp.h"
 
 namespace illum {
+
+bool DiffuseAreaLight::masked(Point3f p, Normal3f n, Point2f uv) const {
+    if (!alpha_) return false;
+    SurfaceHit h;
+    h.p = p;
+    h.n = n;
+    h.ns = n;
+    h.uv = uv;
+    float a = alpha_->evaluate(h);
+    if (a >= 1) return false;
+    if (!(a > 0)) return true;
+    std::uint32_t x, y, z;
+    std::memcpy(&x, &p.x, 4);
+    std::memcpy(&y, &p.y, 4);
+    std::memcpy(&z, &p.z, 4);
+    return float(hash(x, y, z) >> 40) * 0x1p-24f >= a;
+}
 
 std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContext& ctx, Point2f u) const {
     auto ss = shape_->sample({ctx.p, ctx.p_error, ctx.n}, u);
@@ -13,7 +33,7 @@ std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContex
     if (d2 == 0) return std::nullopt;
     Vector3f wi = d / std::sqrt(d2);
     Radiance3 l = emitted(ss->n, -wi);
-    if (l.is_black()) return std::nullopt;
+    if (l.is_black() || masked(ss->p, ss->n, ss->uv)) return std::nullopt;
     SolidAnglePdf pdf(ss->pdf);
     return LightLiSample{wi, l, biradiance(l, pdf), pdf, ss->p, ss->p_error, ss->n, false};
 }
@@ -30,7 +50,7 @@ Power3 DiffuseAreaLight::power() const {
 
 std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2) const {
     ShapeSample ss = shape_->sample_area(u1);
-    if (!(ss.pdf > 0)) return std::nullopt;
+    if (!(ss.pdf > 0) || masked(ss.p, ss.n, ss.uv)) return std::nullopt;
     Vector3f n(ss.n);
     float side_pmf = 1;
     if (two_sided_) {

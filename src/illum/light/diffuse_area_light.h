@@ -3,6 +3,7 @@
 
 #include "illum/geometry/shape.h"
 #include "illum/light/light.h"
+#include "illum/texture/texture.h"
 
 namespace illum {
 
@@ -11,9 +12,17 @@ public:
     DiffuseAreaLight(const AreaShape* shape, Radiance3 radiance, bool two_sided)
         : Light(LightType::Area), shape_(shape), radiance_(radiance), two_sided_(two_sided) {}
 
+    // The shape's "alpha" cut-out (nullptr: opaque). As pbrt-v4 does, a point the cut-out removes does not
+    // emit: alpha 0 never, alpha 1 always, alpha a in between with probability a by a hash of the point.
+    void set_alpha(const FloatTexture* alpha) { alpha_ = alpha; }
+    bool masked(Point3f p, Normal3f n, Point2f uv) const;
+
     std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f u) const override;
     SolidAnglePdf pdf_li(const LightSampleContext& ctx, Vector3f wi, const SurfaceHit* hit) const override;
-    Radiance3 radiance(const SurfaceHit& hit, Vector3f w) const override { return emitted(hit.n, w); }
+    Radiance3 radiance(const SurfaceHit& hit, Vector3f w) const override {
+        if (alpha_ && masked(hit.p, hit.n, hit.uv)) return {};
+        return emitted(hit.n, w);
+    }
     // Φ = π A L for a one-sided Lambertian emitter, twice that for a two-sided one.
     Power3 power() const override;
     // A point uniform by area, a cosine-weighted direction about its normal (either side with
@@ -31,6 +40,7 @@ private:
     const AreaShape* shape_;
     Radiance3 radiance_;
     bool two_sided_;
+    const FloatTexture* alpha_ = nullptr;
 };
 
 } // namespace illum

@@ -692,8 +692,10 @@ private:
         if (auto e = area_light_of(s)) {
             for (std::uint32_t t = 0; t < mesh->triangle_count(); ++t) {
                 scene_->light_shapes.push_back(std::make_unique<TriangleShape>(mesh.get(), t));
-                scene_->lights.push_back(std::make_unique<DiffuseAreaLight>(
-                    scene_->light_shapes.back().get(), e->for_area(mesh->triangle_area(t)), e->two_sided));
+                auto light = std::make_unique<DiffuseAreaLight>(
+                    scene_->light_shapes.back().get(), e->for_area(mesh->triangle_area(t)), e->two_sided);
+                light->set_alpha(alpha_of(s));
+                scene_->lights.push_back(std::move(light));
                 tri_lights.push_back(scene_->lights.back().get());
             }
         }
@@ -735,9 +737,11 @@ private:
         shape->set_alpha(alpha_of(s));
         const Light* light = nullptr;
         if (auto e = area_light_of(s)) {
-            scene_->lights.push_back(
-                std::make_unique<DiffuseAreaLight>(shape.get(), e->for_area(shape->area()), e->two_sided));
-            light = scene_->lights.back().get();
+            auto l =
+                std::make_unique<DiffuseAreaLight>(shape.get(), e->for_area(shape->area()), e->two_sided);
+            l->set_alpha(shape->alpha());
+            light = l.get();
+            scene_->lights.push_back(std::move(l));
         }
         scene_->accelerator.add_shape(std::move(shape), resolve(s.material, s.loc), light);
     }
