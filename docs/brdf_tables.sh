@@ -21,6 +21,7 @@ run rough-conductor -p alpha=0.6 -p distribution=beckmann -p eta=1 -p k=100
 for a in 0.1 0.3 0.6; do run rough-dielectric -p alpha=$a -p eta=1.5; done
 for a in 0.1 0.3 0.6; do run ward -p rho_d=0 -p rho_s=1 -p alpha=$a; done
 run coated-diffuse -p reflectance=1
+run coated-diffuse -p reflectance=1 -p roughness=0.3
 run coated-conductor -p alpha=0.3
 run diffuse-transmission -p reflectance=0.3 -p transmittance=0.7
 run merl -p file=synthetic:0.3

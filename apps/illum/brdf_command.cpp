@@ -93,6 +93,7 @@ struct BrdfOptions {
     int samples = 200000, quad = 256;
     std::uint64_t seed = 1;
     std::string audit_target = "all";
+    bool verbose = false;
     double eta = 1.5;
     std::string metal = "gold";
 };
@@ -167,6 +168,7 @@ void add_brdf_command(CLI::App& app) {
         brdf->add_subcommand("audit", "positivity, reciprocity, energy, sampling checks; exits 1 on failure");
     audit->add_option("model", opt->audit_target, "model name or 'all'");
     audit->add_option("--seed", opt->seed, "random seed");
+    audit->add_flag("-v,--verbose", opt->verbose, "print every check's figures, not only failures");
     audit->callback([opt] {
         std::vector<const ModelSpec*> models;
         if (opt->audit_target == "all")
@@ -197,7 +199,7 @@ void add_brdf_command(CLI::App& app) {
                 for (const auto& c : r.checks) line += fmt::format("{}:{} ", c.name, to_string(c.status));
                 fmt::print("{:<20} {:<44} {}\n", r.model, r.params, line);
                 for (const auto& c : r.checks)
-                    if (c.status == CheckStatus::Fail || c.status == CheckStatus::Info)
+                    if (opt->verbose || c.status == CheckStatus::Fail || c.status == CheckStatus::Info)
                         fmt::print("    {} {}: {}\n", to_string(c.status), c.name, c.detail);
                 if (!r.passed()) {
                     ok = false;
