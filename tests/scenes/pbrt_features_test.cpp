@@ -102,6 +102,26 @@ TEST(PbrtMaterials, UnknownAndUnsupportedTypes) {
     EXPECT_THROW(build("Material \"subsurface\"\nShape \"sphere\"\n", strict), Error);
 }
 
+TEST(PbrtMaterials, CoatedLayerParametersAreReadWithoutWarnings) {
+    // pbrt-v4's full parameter set of both coated materials is understood: no "unused" or "unsupported".
+    auto s = build(R"(Material "coateddiffuse" "float roughness" [0.1] "float thickness" [0.2]
+    "rgb albedo" [0.5 0.4 0.3] "float g" [0.3] "integer maxdepth" [12] "integer nsamples" [2]
+Shape "sphere"
+Material "coatedconductor" "float interface.roughness" [0.05] "float conductor.roughness" [0.2]
+    "spectrum conductor.eta" "metal-Au-eta" "spectrum conductor.k" "metal-Au-k" "float thickness" [0.05]
+    "rgb albedo" [0.2 0.2 0.2] "float g" [-0.2]
+Shape "sphere"
+)");
+    EXPECT_TRUE(s->warnings.empty()) << s->warnings.front();
+    try {
+        build("Material \"coateddiffuse\" \"float thickness\" [-1]\nShape \"sphere\"\n");
+        ADD_FAILURE() << "negative thickness accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("thickness"), std::string::npos) << e.what();
+        EXPECT_EQ(std::string(e.what()).rfind("<test>:4:", 0), 0u) << e.what(); // file:line:column
+    }
+}
+
 TEST(PbrtAreaLights, PowerGivesRadiancePerPrimitiveArea) {
     // A one-sided unit-radius sphere of power 4π² W: L = P / (π A) = 4π² / (π 4π) = 1.
     auto s =

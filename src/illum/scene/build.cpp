@@ -473,6 +473,9 @@ private:
     // and "nsamples" (1).
     LayerParams layer_params(const EntityDesc& m) {
         LayerParams l;
+        if (const Param* t = m.params.find("thickness");
+            t && t->type == ParamType::Float && !(m.params.get_float("thickness", 0.01f) >= 0))
+            throw Error(t->loc, "\"thickness\" must be non-negative");
         l.thickness = float_param(m, "thickness", 0.01f);
         l.albedo = color_param(m, "albedo", Color3(0.0f));
         l.g = float_param(m, "g", 0.0f);
