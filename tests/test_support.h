@@ -60,6 +60,23 @@ Shape "trianglemesh" "point3 P" [-10 -10 0 10 -10 0 10 10 0 -10 10 0] "integer i
                        integrator, resolution, resolution, world);
 }
 
+// The irradiance receiver lit by a one-sided disk light (radius 1, radiance 1) at height 2, facing down,
+// with `occluder` (black material set) between them.
+inline std::string disk_light_through(const std::string& occluder) {
+    return irradiance_receiver(fmt::format(R"(
+AttributeBegin
+  Material "diffuse" "rgb reflectance" [0 0 0]
+  AreaLightSource "diffuse" "rgb L" [1 1 1]
+  Translate 0 0 2
+  ReverseOrientation
+  Shape "disk" "float radius" [1]
+AttributeEnd
+Material "diffuse" "rgb reflectance" [0 0 0]
+{}
+)",
+                                           occluder));
+}
+
 // Mean of one channel over the pixels and its standard error, treating pixels as independent
 // estimates (they are: each has its own scrambled sample sequence).
 struct MeanEstimate {

@@ -64,18 +64,9 @@ TEST(Alpha, CheckerboardAlphaIsHoles) {
 // unoccluded irradiance.
 TEST(Alpha, ShadowRaysPassThroughCutOuts) {
     auto scene = [](const std::string& alpha) {
-        return test::irradiance_receiver(fmt::format(R"(
-AttributeBegin
-  Material "diffuse" "rgb reflectance" [0 0 0]
-  AreaLightSource "diffuse" "rgb L" [1 1 1]
-  Translate 0 0 2
-  ReverseOrientation
-  Shape "disk" "float radius" [1]
-AttributeEnd
-Material "diffuse" "rgb reflectance" [0 0 0]
-Shape "trianglemesh" "point3 P" [-3 -3 1 3 -3 1 3 3 1 -3 3 1] "integer indices" [0 1 2 0 2 3] {}
-)",
-                                                     alpha));
+        return test::disk_light_through("Shape \"trianglemesh\" \"point3 P\" [-3 -3 1 3 -3 1 3 3 1 -3 3 1] "
+                                        "\"integer indices\" [0 1 2 0 2 3] " +
+                                        alpha);
     };
     test::RenderSetup s;
     s.integrator = "direct";

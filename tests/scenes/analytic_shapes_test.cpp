@@ -174,19 +174,7 @@ Shape "sphere" "float radius" [2] "float alpha" [0.5])"),
 // Shadow rays: the receiver lit by a disk light through a disk of alpha 0.5 gets half the light.
 TEST(AnalyticShapesAlpha, ShadowRaysPassThroughCutOuts) {
     auto scene = [](const std::string& alpha) {
-        return test::irradiance_receiver(fmt::format(R"(
-AttributeBegin
-  Material "diffuse" "rgb reflectance" [0 0 0]
-  AreaLightSource "diffuse" "rgb L" [1 1 1]
-  Translate 0 0 2
-  ReverseOrientation
-  Shape "disk" "float radius" [1]
-AttributeEnd
-Material "diffuse" "rgb reflectance" [0 0 0]
-Translate 0 0 1
-Shape "disk" "float radius" [3] {}
-)",
-                                                     alpha));
+        return test::disk_light_through("Translate 0 0 1\nShape \"disk\" \"float radius\" [3] " + alpha);
     };
     test::RenderSetup s;
     s.integrator = "direct";

@@ -36,10 +36,9 @@ public:
     }
     std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode,
                                      Lobes lobes = Lobes::All) const {
-        auto s = smooth_ ? flat_.sample_lobes(wo, uc, u, mode, lobes)
-                         : rough_.sample_lobes(wo, uc, u, mode, lobes);
-        if (!s || s->f.is_black() || !(s->pdf.value > 0) || s->wi.z == 0) return std::nullopt;
-        return s;
+        // The layered walk rejects unusable samples (bsdf_detail::usable) itself.
+        return smooth_ ? flat_.sample_lobes(wo, uc, u, mode, lobes)
+                       : rough_.sample_lobes(wo, uc, u, mode, lobes);
     }
     float pdf(Vector3f wo, Vector3f wi, TransportMode mode, Lobes lobes = Lobes::All) const {
         return smooth_ ? 0 : rough_.pdf_lobes(wo, wi, mode, lobes).value;
