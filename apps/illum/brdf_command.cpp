@@ -10,7 +10,7 @@
 #include <fmt/core.h>
 
 #include "commands.h"
-#include "illum/analysis/albedo.h"
+#include "illum/bsdf/albedo.h"
 #include "illum/analysis/audit.h"
 #include "illum/analysis/gallery.h"
 #include "illum/bsdf/conductor.h"

@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "illum/analysis/albedo.h"
+#include "illum/bsdf/albedo.h"
 #include "illum/bsdf/coated.h"
 #include "illum/bsdf/conductor.h"
 #include "illum/bsdf/dielectric.h"

@@ -10,7 +10,7 @@
 #include "illum/geometry/ray.h"
 #include "illum/radiometry/quantity.h"
 #include "illum/render/sampler.h"
-#include "illum/scene/scene.h"
+#include "illum/render/scene.h"
 #include "illum/util/arena.h"
 
 namespace illum {

@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "illum/camera/film.h"
-#include "illum/render/progress.h"
+#include "illum/util/progress.h"
 #include "illum/util/error.h"
 
 namespace illum {

@@ -1,6 +1,6 @@
 #include "illum/scene/build.h"
 
-#include "illum/analysis/albedo.h"
+#include "illum/bsdf/albedo.h"
 #include "illum/bsdf/registry.h"
 #include "illum/bsdf/shared_bxdf_material.h"
 #include "illum/bsdf/textured_model_material.h"
