@@ -18,8 +18,8 @@
 #include <cstdint>
 #include <string>
 
+#include "illum/geometry/ply.h"
 #include "illum/scene/pbrt/parser.h"
-#include "illum/scene/pbrt/ply.h"
 #include "illum/util/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

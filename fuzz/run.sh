@@ -12,7 +12,7 @@ cxx="${CLANGXX:-clang++}"
 mkdir -p "$out/corpus"
 bin="$out/pbrt_parser_fuzz"
 srcs=(fuzz/pbrt_parser_fuzz.cpp src/illum/scene/pbrt/tokenizer.cpp src/illum/scene/pbrt/parser.cpp
-      src/illum/scene/pbrt/ply.cpp src/illum/param/param_set.cpp src/illum/math/transform.cpp)
+      src/illum/geometry/ply.cpp src/illum/param/param_set.cpp src/illum/math/transform.cpp)
 newest=$(cd "$root" && ls -t "${srcs[@]}" src/illum/scene/pbrt/*.h src/illum/scene/*.h | head -1)
 if [ ! -x "$bin" ] || [ "$root/$newest" -nt "$bin" ]; then
     echo "fuzz: building $bin"

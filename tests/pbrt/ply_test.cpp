@@ -1,5 +1,5 @@
 // PLY reader: the three encodings read back identically, gzip, odd layouts, errors, and the coffee meshes.
-#include "illum/scene/pbrt/ply.h"
+#include "illum/geometry/ply.h"
 
 #include <gtest/gtest.h>
 

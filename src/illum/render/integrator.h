@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "illum/geometry/ray.h"
 #include "illum/radiometry/quantity.h"
@@ -56,6 +57,8 @@ inline float power_heuristic(float pdf_a, float pdf_b) {
     return a + b > 0 ? a / (a + b) : 0.0f;
 }
 
+// The names make_integrator knows (scene files and --integrator may use each).
+const std::vector<std::string>& integrator_names();
 // Integrator by name: "path", "direct", "albedo", "normal". Throws illum::Error for another name.
 std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene& scene, int max_depth);
 

@@ -336,9 +336,15 @@ private:
         case ParamType::Texture:
             if (first_num) wrong_kind(first_num, "quoted strings", "number");
             if (first_bool) wrong_kind(first_bool, "quoted strings", "bool");
+            // File names resolve here, once, against the folder of the file that names them (the builder
+            // and the create functions never join folders again): pbrt-v4's "filename", "normalmap" and
+            // "lensfile", and the "file" of illum's measured "merl" material (but for its built-in
+            // "synthetic:ALPHA" tables).
             if (resolve_files && p.type == ParamType::String &&
-                (p.name == "filename" || p.name == "normalmap"))
-                for (auto& str : strs) str = resolve_path(f.dir, str);
+                (p.name == "filename" || p.name == "normalmap" || p.name == "lensfile" || p.name == "file"))
+                for (auto& str : strs)
+                    if (!(p.name == "file" && str.rfind("synthetic:", 0) == 0))
+                        str = resolve_path(f.dir, str);
             break;
         case ParamType::Spectrum:
             if (first_bool) wrong_kind(first_bool, "numbers or a quoted name", "bool");

@@ -1,4 +1,4 @@
-#include "illum/scene/pbrt/ply.h"
+#include "illum/geometry/ply.h"
 
 #include <algorithm>
 #include <bit>
