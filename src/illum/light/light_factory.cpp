@@ -53,10 +53,10 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
         Point3f from = l.params.get_point3("from").value_or(Point3f{0, 0, 0});
         Point3f to = l.params.get_point3("to").value_or(Point3f{0, 0, 1});
         float cone = l.params.get_float("coneangle", 30);
-        float delta = l.params.get_float("conedelta", 5);
+        float delta = l.params.get_float("conedeltaangle", 5); // pbrt-v4's name (and RenderMan's)
         if (!(cone > 0 && cone <= 180) || !(delta >= 0))
             throw Error(l.loc,
-                        fmt::format("light \"spot\": coneangle must be in (0, 180] and conedelta >= 0, "
+                        fmt::format("light \"spot\": coneangle must be in (0, 180] and conedeltaangle >= 0, "
                                     "not {} and {}",
                                     cone, delta));
         Point3f p = l.world_from_light(from);
