@@ -142,6 +142,17 @@ TEST_F(Cli, UnusedParametersWarnAndStrictRefuses) {
     EXPECT_FALSE(fs::exists(dir_ / "v.exr"));
 }
 
+// A scene that ends before WorldBegin would render nothing: it is an error at its end, as in pbrt-v4.
+TEST_F(Cli, SceneWithoutWorldIsAnError) {
+    write_text(dir_ / "empty.pbrt", "");
+    expect_error(illum("render empty.pbrt -o x.exr", dir_),
+                 "error: empty.pbrt:1:1: End of files before WorldBegin");
+    write_text(dir_ / "options.pbrt", "Film \"rgb\" \"integer xresolution\" [8]\nCamera \"perspective\"\n");
+    expect_error(illum("render options.pbrt -o x.exr", dir_),
+                 "error: options.pbrt:3:1: End of files before WorldBegin");
+    EXPECT_FALSE(fs::exists(dir_ / "x.exr"));
+}
+
 TEST_F(Cli, MissingSceneFile) {
     expect_error(illum("render nowhere.pbrt -o x.exr", dir_), "nowhere.pbrt");
     EXPECT_FALSE(fs::exists(dir_ / "x.exr"));

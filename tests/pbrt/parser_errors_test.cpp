@@ -96,6 +96,11 @@ const Case kCases[] = {
      "cannot open included file \"does-not-exist.pbrt\""},
     {"LightSource inside an object", "WorldBegin\nObjectBegin \"a\"\nLightSource \"point\"", "bad.pbrt:3:1",
      "lights cannot be instanced"},
+    // pbrt-v4 stops with this message too; the position is the end of the file.
+    {"empty file", "", "bad.pbrt:1:1", "End of files before WorldBegin"},
+    {"comments only", "# nothing here\n\n", "bad.pbrt:3:1", "End of files before WorldBegin"},
+    {"options without a world", "Camera \"perspective\"\nFilm \"rgb\" ", "bad.pbrt:2:12",
+     "End of files before WorldBegin"},
 };
 
 TEST(PbrtParserErrors, MalformedInputCorpus) {
@@ -144,6 +149,20 @@ TEST(PbrtParserErrors, IncludingADirectoryIsAnError) {
     dir.write("sub/x.pbrt", "");
     expect_error([&] { parse_pbrt_string("Include \"sub\"", "main.pbrt", dir.path()); }, "main.pbrt:1:9",
                  "cannot open included file");
+}
+
+// The world may begin in an included file, and an included fragment needs no WorldBegin of its own; but the
+// end of the main file is checked even when an included file ends first.
+TEST(PbrtParserErrors, WorldBeginMayComeFromAnIncludedFile) {
+    test::TempDir dir("worldinc");
+    dir.write("world.pbrt", "WorldBegin\n");
+    dir.write("shapes.pbrt", "Shape \"sphere\"\n");
+    dir.write("camera.pbrt", "Camera \"perspective\"\n");
+    SceneDesc s =
+        parse_pbrt_string("Include \"world.pbrt\"\nInclude \"shapes.pbrt\"\n", "main.pbrt", dir.path());
+    EXPECT_EQ(s.shapes.size(), 1u);
+    expect_error([&] { parse_pbrt_string("Include \"camera.pbrt\"\n", "main.pbrt", dir.path()); },
+                 "main.pbrt:2:1", "End of files before WorldBegin");
 }
 
 TEST(PbrtParserErrors, MissingTopLevelFile) {

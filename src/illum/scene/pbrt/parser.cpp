@@ -94,6 +94,9 @@ public:
             FileFrame& f = *files_.back();
             Token t = f.tok.next();
             if (t.kind == TokenKind::End) {
+                // An included file may hold any part of a scene, but the scene as a whole needs its world:
+                // without WorldBegin nothing would be rendered, and pbrt-v4 stops here too.
+                if (files_.size() == 1 && !in_world_) f.tok.fail(t, "End of files before WorldBegin");
                 files_.pop_back();
                 continue;
             }

@@ -14,6 +14,8 @@
 //    records the CTM at the use as world_from_instance: a shape of an instance is placed at
 //    world_from_instance * world_from_object;
 //  - NamedMaterial and ObjectInstance may name things defined later in the file (checked at the end);
+//  - a scene must reach WorldBegin (possibly in an included file): one that ends before it is an error at
+//    the end of the main file ("End of files before WorldBegin"), so an empty file is not a black image;
 //  - relative file names resolve against the directory of the file that names them: Include/Import, and
 //    string parameters named "filename" (and a material's "normalmap") of shapes, textures, lights,
 //    materials and media (the Film's output "filename" is left as written); a "spectrum" string that
