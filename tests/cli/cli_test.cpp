@@ -153,6 +153,22 @@ TEST_F(Cli, SceneWithoutWorldIsAnError) {
     EXPECT_FALSE(fs::exists(dir_ / "x.exr"));
 }
 
+// The parser's warnings (here: media) are errors under --strict too, not only the builder's.
+TEST_F(Cli, StrictRefusesParserWarnings) {
+    write_text(dir_ / "fog.pbrt", "Film \"rgb\" \"integer xresolution\" [8] \"integer yresolution\" [8]\n"
+                                  "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+                                  "WorldBegin\nShape \"sphere\"\n");
+    CliRun r = illum("render fog.pbrt --spp 1 -o u.exr", dir_);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("warning: fog.pbrt:2:1: participating media are not supported"), std::string::npos)
+        << r.err;
+    expect_error(illum("render fog.pbrt --spp 1 --strict -o v.exr", dir_),
+                 "error: fog.pbrt:2:1: participating media are not supported");
+    EXPECT_FALSE(fs::exists(dir_ / "v.exr"));
+    EXPECT_EQ(illum("info fog.pbrt", dir_).exit_code, 0);
+    expect_error(illum("info fog.pbrt --strict", dir_), "error: fog.pbrt:2:1: participating media");
+}
+
 TEST_F(Cli, MissingSceneFile) {
     expect_error(illum("render nowhere.pbrt -o x.exr", dir_), "nowhere.pbrt");
     EXPECT_FALSE(fs::exists(dir_ / "x.exr"));

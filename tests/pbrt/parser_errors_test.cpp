@@ -165,6 +165,27 @@ TEST(PbrtParserErrors, WorldBeginMayComeFromAnIncludedFile) {
                  "main.pbrt:2:1", "End of files before WorldBegin");
 }
 
+// --strict: the first of the parser's warnings is an error at its position; without it, a warning.
+TEST(PbrtParserErrors, StrictTurnsParserWarningsIntoErrors) {
+    const char* cases[][3] = {
+        {"Camera \"perspective\"\n  MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\nWorldBegin\n",
+         "bad.pbrt:2:3", "participating media are not supported"},
+        {"ActiveTransform EndTime\nTranslate 1 0 0\nWorldBegin\n", "bad.pbrt:1:1", "motion blur"},
+        {"WorldBegin\nTransformBegin\nTransformEnd\n", "bad.pbrt:2:1", "TransformBegin/TransformEnd"},
+        {"WorldBegin\nWorldEnd\n", "bad.pbrt:2:1", "WorldEnd"},
+    };
+    ParseOptions strict;
+    strict.strict = true;
+    for (auto& c : cases) {
+        SCOPED_TRACE(c[0]);
+        SceneDesc s = parse_pbrt_string(c[0], "bad.pbrt", "/nowhere");
+        ASSERT_EQ(s.warnings.size(), 1u);
+        EXPECT_NE(s.warnings[0].find(std::string(c[1]) + ": " + c[2]), std::string::npos) << s.warnings[0];
+        expect_error([&] { parse_pbrt_string(c[0], "bad.pbrt", "/nowhere", strict); }, c[1],
+                     std::string(c[2]));
+    }
+}
+
 TEST(PbrtParserErrors, MissingTopLevelFile) {
     expect_error([] { parse_pbrt_file("/nonexistent/scene.pbrt"); }, "/nonexistent/scene.pbrt",
                  "cannot open scene file");

@@ -84,7 +84,7 @@ const char* push_name(char kind) {
 
 class Parser {
 public:
-    explicit Parser(SceneDesc& scene) : sc_(scene) {}
+    Parser(SceneDesc& scene, const ParseOptions& options) : sc_(scene), options_(options) {}
 
     void run(std::string text, const std::string& filename, const std::string& dir,
              const std::string& canon) {
@@ -116,7 +116,10 @@ private:
         return std::string(s);
     }
 
+    // A recognised feature that illum does not support (or ignores): one warning, or an error under --strict
+    // worded as the builder's (build.cpp), so both kinds read alike.
     void warn(const SourceLocation& loc, const std::string& message) {
+        if (options_.strict) throw Error(loc, message + " (unsupported; --strict)");
         sc_.warnings.push_back(loc.to_string() + ": " + message);
     }
 
@@ -799,6 +802,7 @@ private:
     enum class Active { All, Start, End };
 
     SceneDesc& sc_;
+    ParseOptions options_;
     std::vector<std::unique_ptr<FileFrame>> files_;
     GraphicsState gs_;
     std::vector<PushEntry> stack_;
@@ -814,23 +818,23 @@ private:
 
 } // namespace
 
-SceneDesc parse_pbrt_file(const std::string& path) {
+SceneDesc parse_pbrt_file(const std::string& path, const ParseOptions& options) {
     auto text = read_text_file(path);
     if (!text) throw Error(SourceLocation{path, 0, 0}, "cannot open scene file");
     SceneDesc sc;
     sc.filename = path;
     sc.base_dir = directory_of(path);
-    Parser(sc).run(std::move(*text), path, sc.base_dir, canonical_path(path));
+    Parser(sc, options).run(std::move(*text), path, sc.base_dir, canonical_path(path));
     return sc;
 }
 
 SceneDesc parse_pbrt_string(const std::string& text, const std::string& virtual_filename,
-                            const std::string& base_dir) {
+                            const std::string& base_dir, const ParseOptions& options) {
     SceneDesc sc;
     sc.filename = virtual_filename;
     sc.base_dir = base_dir;
-    Parser(sc).run(text, virtual_filename, base_dir,
-                   canonical_path(resolve_path(base_dir, virtual_filename)));
+    Parser(sc, options)
+        .run(text, virtual_filename, base_dir, canonical_path(resolve_path(base_dir, virtual_filename)));
     return sc;
 }
 

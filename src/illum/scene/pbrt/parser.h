@@ -31,12 +31,18 @@
 
 namespace illum {
 
+struct ParseOptions {
+    // The parser's warnings (SceneDesc::warnings) are errors instead: the first throws illum::Error at its
+    // position. The CLI's --strict sets it, as it sets BuildOptions::strict for the builder's warnings.
+    bool strict = false;
+};
+
 // Parses a scene file; SceneDesc::base_dir is the file's directory.
-SceneDesc parse_pbrt_file(const std::string& path);
+SceneDesc parse_pbrt_file(const std::string& path, const ParseOptions& options = {});
 
 // Parses scene text held in memory; `virtual_filename` names it in errors and `base_dir` is where its
 // relative file names (Include, "filename" parameters) resolve.
 SceneDesc parse_pbrt_string(const std::string& text, const std::string& virtual_filename,
-                            const std::string& base_dir);
+                            const std::string& base_dir, const ParseOptions& options = {});
 
 } // namespace illum
