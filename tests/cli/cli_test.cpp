@@ -7,10 +7,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+
+#include "illum/image/image_io.h"
 
 namespace {
 
@@ -167,6 +170,48 @@ TEST_F(Cli, StrictRefusesParserWarnings) {
     EXPECT_FALSE(fs::exists(dir_ / "v.exr"));
     EXPECT_EQ(illum("info fog.pbrt", dir_).exit_code, 0);
     expect_error(illum("info fog.pbrt --strict", dir_), "error: fog.pbrt:2:1: participating media");
+}
+
+// The lines of `illum diff`'s table (up to the first line that is not a row), each of the same width.
+void expect_aligned_table(const std::string& out) {
+    std::istringstream in(out);
+    std::string header, line;
+    ASSERT_TRUE(std::getline(in, header));
+    int rows = 0;
+    while (std::getline(in, line) && line.rfind("excluded", 0) != 0) {
+        EXPECT_EQ(line.size(), header.size()) << "misaligned row: \"" << line << "\" in\n" << out;
+        ++rows;
+    }
+    EXPECT_EQ(rows, 6) << out;
+}
+
+// Pixels with Inf/NaN are left out of `illum diff`'s figures, counted, and the table stays aligned.
+TEST_F(Cli, DiffExcludesNonFinitePixels) {
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    illum::Image a(2, 2, illum::Color3(1.0f)), b(2, 2, illum::Color3(1.0f));
+    a(1, 0) = {inf, 1, 1};
+    a(0, 1) = {nan, 2, 2};
+    b(1, 1) = {-inf, 1, 1};
+    illum::write_image(a, (dir_ / "a.pfm").string());
+    illum::write_image(b, (dir_ / "b.pfm").string());
+    CliRun r = illum("diff a.pfm b.pfm", dir_);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("excluded 2 pixels with Inf/NaN in a.pfm, 1 in b.pfm"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("inf"), std::string::npos) << r.out;
+    expect_aligned_table(r.out);
+    auto j = nlohmann::json::parse(illum("diff --json a.pfm b.pfm", dir_).out);
+    EXPECT_EQ(j["nonfinite_pixels"]["image"], 2);
+    EXPECT_EQ(j["nonfinite_pixels"]["reference"], 1);
+    EXPECT_EQ(j["compared_pixels"], 1);
+    EXPECT_DOUBLE_EQ(double(j["rmse"]["all"]), 0.0);
+
+    // A reference channel of mean 0 gives an infinite mean difference: still in its column.
+    illum::write_image(illum::Image(2, 2, illum::Color3(0, 1, 1)), (dir_ / "z.pfm").string());
+    r = illum("diff a.pfm z.pfm", dir_);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    expect_aligned_table(r.out);
+    EXPECT_NE(r.out.find("excluded 2 pixels with Inf/NaN in a.pfm, 0 in z.pfm"), std::string::npos) << r.out;
 }
 
 TEST_F(Cli, MissingSceneFile) {
