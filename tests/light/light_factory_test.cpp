@@ -3,11 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 #include "illum/light/light_factory.h"
 #include "illum/light/spot_light.h"
+#include "illum/radiometry/spectra.h"
 #include "illum/scene/pbrt/parser.h"
 #include "illum/util/error.h"
 
@@ -80,6 +84,52 @@ TEST(LightFactory, EveryPbrtV4ParameterIsRead) {
         EXPECT_TRUE(m.light) << text;
         for (const auto& u : m.unused) ADD_FAILURE() << text << ": \"" << u << "\" is not used";
         for (const auto& w : m.warnings) ADD_FAILURE() << text << ": " << w;
+    }
+}
+
+// pbrt-v4 reads "I" and "L" as spectra: blackbody, named, sampled or from a file, each normalised to
+// luminance 1 before `scale`; RGB keeps its own luminance.
+TEST(LightFactory, EmissionMayBeASpectrum) {
+    auto intensity = [](const std::string& param) {
+        Made m = make("LightSource \"point\" " + param + " \"float scale\" 2");
+        EXPECT_TRUE(m.unused.empty()) << param;
+        EXPECT_TRUE(m.warnings.empty()) << param;
+        return Color3(m.light->power().rgb / float(4 * kPi)); // Φ = 4π I
+    };
+    auto expect_color = [](Color3 got, Color3 want, const std::string& what) {
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-4f * std::max(1.0f, want[c])) << what;
+    };
+    expect_color(intensity(R"("rgb I" [1 2 3])"), Color3(2, 4, 6), "rgb");
+    expect_color(intensity(R"("blackbody I" [3000])"), blackbody_rgb(3000) * 2.0f, "blackbody");
+    EXPECT_NEAR(intensity(R"("blackbody I" [3000])").luminance(), 2, 1e-3);
+    EXPECT_GT(blackbody_rgb(3000).r, blackbody_rgb(3000).b); // warm
+    expect_color(intensity(R"("spectrum I" "stdillum-D65")"), Color3(2.0f), "stdillum-D65");
+    EXPECT_NEAR(intensity(R"("spectrum I" "stdillum-A")").luminance(), 2, 1e-3);
+    Color3 flat = intensity(R"("spectrum I" [300 7 800 7])");
+    EXPECT_NEAR(flat.luminance(), 2, 1e-3); // the amplitude 7 is normalised away
+    std::string file = (std::filesystem::temp_directory_path() /
+                        ("illum_light_spectrum_" + std::to_string(::getpid()) + ".spd"))
+                           .string();
+    std::ofstream(file) << "# flat\n300 7\n800 7\n";
+    expect_color(intensity("\"spectrum I\" \"" + file + "\""), flat, "spectrum file");
+    std::filesystem::remove(file);
+
+    // Every light type that takes an emission spectrum.
+    for (const char* text :
+         {R"(LightSource "spot" "blackbody I" [5000])", R"(LightSource "distant" "blackbody L" [5000])",
+          R"(LightSource "infinite" "spectrum L" "stdillum-A")"}) {
+        Made m = make(text);
+        EXPECT_TRUE(m.light) << text;
+        EXPECT_TRUE(m.unused.empty()) << text;
+        EXPECT_TRUE(m.warnings.empty()) << text;
+    }
+    try {
+        make(R"(LightSource "point" "float I" [3])");
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("<light test>:2:21: parameter \"I\" has type float"),
+                  std::string::npos)
+            << e.what();
     }
 }
 
