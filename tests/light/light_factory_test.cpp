@@ -87,6 +87,25 @@ TEST(LightFactory, EveryPbrtV4ParameterIsRead) {
     }
 }
 
+// "portal" is read and named in a warning (an error under --strict); "L" with "filename" is an error, as
+// in pbrt-v4, at the position of "L".
+TEST(LightFactory, InfinitePortalWarnsAndLWithFilenameIsAnError) {
+    Made m = make(R"(LightSource "infinite" "rgb L" [1 1 1]
+                         "point3 portal" [0 0 0  1 0 0  1 1 0  0 1 0])");
+    EXPECT_TRUE(m.unused.empty());
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_NE(m.warnings[0].find("\"portal\" is not supported"), std::string::npos) << m.warnings[0];
+    try {
+        make(R"(LightSource "infinite" "string filename" "sky.exr" "rgb L" [1 1 1])");
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(
+            std::string(e.what()).find(":2:52: infinite light: \"L\" and \"filename\" cannot both be given"),
+            std::string::npos)
+            << e.what();
+    }
+}
+
 // pbrt-v4 reads "I" and "L" as spectra: blackbody, named, sampled or from a file, each normalised to
 // luminance 1 before `scale`; RGB keeps its own luminance.
 TEST(LightFactory, EmissionMayBeASpectrum) {

@@ -140,10 +140,21 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
             throw Error(
                 l.params.find("sampling")->loc,
                 fmt::format("\"sampling\" must be importance, uniform or none, not \"{}\"", sampling_name));
+        if (const Param* portal = l.params.find("portal")) {
+            // pbrt-v4 then emits only in the directions the portal (a window quadrilateral) covers and
+            // samples those better; illum keeps the whole map: the same image wherever the scene's walls
+            // hide the other directions, as they do in the interiors portals are meant for.
+            portal->used = true;
+            ctx.unsupported(portal->loc,
+                            "infinite light \"portal\" is not supported: the whole environment emits and is "
+                            "sampled");
+        }
         std::string filename = l.params.get_string("filename", "");
         if (!filename.empty()) {
-            if (l.params.has("L"))
-                ctx.unsupported(l.loc, "\"L\" is ignored for an environment light with a \"filename\"");
+            // pbrt-v4 refuses both ("Can't specify both emission L and filename"): which one was meant
+            // is not known, so neither is guessed.
+            if (const Param* lp = l.params.find("L"))
+                throw Error(lp->loc, "infinite light: \"L\" and \"filename\" cannot both be given");
             std::optional<EnvLayout> layout;
             std::string layout_name = l.params.get_string("layout", ""); // illum extension
             if (!layout_name.empty()) {
