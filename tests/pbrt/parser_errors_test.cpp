@@ -1,6 +1,9 @@
 // Malformed scenes: each must throw illum::Error naming file:line:column and saying what is wrong.
 #include <gtest/gtest.h>
 
+#include <cerrno>
+#include <cstring>
+
 #include "illum/scene/pbrt/parser.h"
 #include "test_util.h"
 
@@ -93,7 +96,8 @@ const Case kCases[] = {
     {"unknown Attribute target", "WorldBegin\nAttribute \"camera\" \"float x\" 1", "bad.pbrt:2:1",
      "unknown target \"camera\""},
     {"missing Include file", "WorldBegin\nInclude \"does-not-exist.pbrt\"", "bad.pbrt:2:9",
-     "cannot open included file \"does-not-exist.pbrt\""},
+     "cannot open included file \"does-not-exist.pbrt\" (/nowhere/does-not-exist.pbrt): No such file or "
+     "directory"},
     {"LightSource inside an object", "WorldBegin\nObjectBegin \"a\"\nLightSource \"point\"", "bad.pbrt:3:1",
      "lights cannot be instanced"},
     // pbrt-v4 stops with this message too; the position is the end of the file.
@@ -148,7 +152,8 @@ TEST(PbrtParserErrors, IncludingADirectoryIsAnError) {
     test::TempDir dir("incdir");
     dir.write("sub/x.pbrt", "");
     expect_error([&] { parse_pbrt_string("Include \"sub\"", "main.pbrt", dir.path()); }, "main.pbrt:1:9",
-                 "cannot open included file");
+                 std::string("cannot open included file \"sub\" (") + dir.file("sub") +
+                     "): " + std::strerror(EISDIR));
 }
 
 // The world may begin in an included file, and an included fragment needs no WorldBegin of its own; but the
@@ -188,7 +193,7 @@ TEST(PbrtParserErrors, StrictTurnsParserWarningsIntoErrors) {
 
 TEST(PbrtParserErrors, MissingTopLevelFile) {
     expect_error([] { parse_pbrt_file("/nonexistent/scene.pbrt"); }, "/nonexistent/scene.pbrt",
-                 "cannot open scene file");
+                 std::string("cannot open scene file: ") + std::strerror(ENOENT));
 }
 
 } // namespace

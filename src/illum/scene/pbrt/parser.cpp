@@ -1,7 +1,9 @@
 #include "illum/scene/pbrt/parser.h"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
 #include <limits>
@@ -9,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string_view>
+#include <sys/stat.h>
 
 #include "illum/scene/pbrt/tokenizer.h"
 
@@ -20,19 +23,30 @@ namespace fs = std::filesystem;
 
 constexpr int kMaxIncludeDepth = 64;
 
-// Reads a regular file whole; nullopt when it cannot be read (missing, a directory, a device...).
-std::optional<std::string> read_text_file(const std::string& path) {
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) return std::nullopt;
+// Reads a regular file whole; nullopt when it cannot be read, with `why` the operating system's reason
+// (or "not a regular file" for a device or FIFO, which might never end).
+std::optional<std::string> read_text_file(const std::string& path, std::string& why) {
     std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) return std::nullopt;
+    if (!f) {
+        why = std::strerror(errno);
+        return std::nullopt;
+    }
+    struct stat st {};
+    if (::fstat(::fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
+        why = S_ISDIR(st.st_mode) ? std::strerror(EISDIR) : "not a regular file";
+        std::fclose(f);
+        return std::nullopt;
+    }
     std::string text;
     char buf[1 << 16];
     size_t n;
     while ((n = std::fread(buf, 1, sizeof(buf), f)) > 0) text.append(buf, n);
-    bool bad = std::ferror(f);
+    if (std::ferror(f)) {
+        why = std::strerror(errno);
+        std::fclose(f);
+        return std::nullopt;
+    }
     std::fclose(f);
-    if (bad) return std::nullopt;
     return text;
 }
 
@@ -775,8 +789,9 @@ private:
                 f.tok.fail(nt, fmt::format("include cycle: {}", chain));
             }
         }
-        auto text = read_text_file(path);
-        if (!text) f.tok.fail(nt, fmt::format("cannot open included file \"{}\" ({})", name, path));
+        std::string why;
+        auto text = read_text_file(path, why);
+        if (!text) f.tok.fail(nt, fmt::format("cannot open included file \"{}\" ({}): {}", name, path, why));
         files_.push_back(std::make_unique<FileFrame>(
             FileFrame{Tokenizer(std::move(*text), path), directory_of(path), canon}));
     }
@@ -819,8 +834,9 @@ private:
 } // namespace
 
 SceneDesc parse_pbrt_file(const std::string& path, const ParseOptions& options) {
-    auto text = read_text_file(path);
-    if (!text) throw Error(SourceLocation{path, 0, 0}, "cannot open scene file");
+    std::string why;
+    auto text = read_text_file(path, why);
+    if (!text) throw Error(SourceLocation{path, 0, 0}, "cannot open scene file: " + why);
     SceneDesc sc;
     sc.filename = path;
     sc.base_dir = directory_of(path);
