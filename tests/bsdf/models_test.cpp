@@ -145,7 +145,8 @@ TEST(Registry, RejectsBadInput) {
     expect_error("phong", {{"kd", "0.8"}, {"ks", "0.8"}}, "kd + ks");
     expect_error("rough-conductor", {{"distribution", "phong"}}, "one of ggx, beckmann");
     expect_error("merl", {}, "'file' is required");
-    expect_error("merl", {{"file", "/nonexistent/x.binary"}}, "cannot open");
+    expect_error("merl", {{"file", "/nonexistent/x.binary"}},
+                 "cannot open MERL file '/nonexistent/x.binary': No such file or directory");
     // Constructors validate too.
     EXPECT_THROW(DielectricBxDF(-1.0f), Error);
     EXPECT_THROW(ConductorBxDF(Color3(0), Color3(1)), Error);
