@@ -1,15 +1,13 @@
 #include "illum/light/light_factory.h"
 
 #include <fmt/format.h>
-#include <fstream>
-#include <sstream>
 
 #include "illum/light/directional_light.h"
 #include "illum/light/image_environment_light.h"
 #include "illum/light/point_light.h"
 #include "illum/light/spot_light.h"
 #include "illum/light/uniform_environment_light.h"
-#include "illum/radiometry/spectra.h"
+#include "illum/param/spectrum_param.h"
 
 namespace illum {
 
@@ -40,41 +38,7 @@ std::optional<Color3> emission_rgb(const LightDesc& l, const std::string& name) 
     if (p->type != ParamType::Spectrum)
         l.params.fail(*p, fmt::format("parameter \"{}\" has type {}, expected rgb, spectrum or blackbody",
                                       name, to_string(p->type)));
-    p->used = true;
-    if (p->strings.size() == 1 && p->strings[0] == "blackbody") {
-        if (p->numbers.size() != 1 || !(p->numbers[0] > 0) || !std::isfinite(p->numbers[0]))
-            l.params.fail(*p, fmt::format("\"{}\": blackbody needs one positive temperature", name));
-        return blackbody_rgb(p->numbers[0]);
-    }
-    SampledSpectrum s;
-    std::vector<double> pairs = p->numbers;
-    if (p->strings.size() == 1 && p->numbers.empty()) {
-        if (auto c = named_spectrum_rgb(p->strings[0])) {
-            float y = c->luminance();
-            if (!(y > 0)) l.params.fail(*p, fmt::format("spectrum \"{}\" has no luminance", p->strings[0]));
-            return *c / y;
-        }
-        // The parser has resolved a file name against the scene's folder.
-        std::ifstream in(p->strings[0]);
-        if (!in)
-            l.params.fail(*p, fmt::format("unknown named spectrum or unreadable file \"{}\"", p->strings[0]));
-        std::string line;
-        while (std::getline(in, line)) {
-            if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-            std::istringstream words(line);
-            double v;
-            while (words >> v) pairs.push_back(v);
-        }
-    }
-    if (pairs.size() < 2 || pairs.size() % 2)
-        l.params.fail(*p, fmt::format("spectrum \"{}\" needs (wavelength, value) pairs", name));
-    for (std::size_t i = 0; i < pairs.size(); i += 2) {
-        if (i > 0 && !(pairs[i] > pairs[i - 2]))
-            l.params.fail(*p, fmt::format("spectrum \"{}\": wavelengths must increase", name));
-        s.lambda.push_back(pairs[i]);
-        s.value.push_back(pairs[i + 1]);
-    }
-    return illuminant_spectrum_to_rgb(s);
+    return spectrum_param_rgb(*p, SpectrumKind::Illuminant);
 }
 
 Vector3f unit_or_fail(const LightDesc& l, Vector3f v, const char* what) {

@@ -1,6 +1,7 @@
 #include "illum/param/spectrum_param.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fmt/format.h>
 #include <fstream>
@@ -20,7 +21,12 @@ Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind) {
     SampledSpectrum s;
     std::vector<double> v;
     if (p.strings.size() == 1 && p.numbers.empty()) {
-        if (auto c = named_spectrum_rgb(p.strings[0])) return *c;
+        if (auto c = named_spectrum_rgb(p.strings[0])) {
+            if (kind == SpectrumKind::Unbounded) return *c;
+            float y = c->luminance(); // an illuminant is normalised to luminance 1, whatever its name
+            if (!(y > 0)) throw Error(p.loc, fmt::format("spectrum \"{}\" has no luminance", p.strings[0]));
+            return *c / y;
+        }
         const std::string& file = p.strings[0];
         std::ifstream in(file);
         if (!in)
