@@ -12,6 +12,7 @@
 #include "illum/bsdf/lambert.h"
 #include "illum/bsdf/registry.h"
 #include "illum/bsdf/thin_dielectric.h"
+#include "illum/geometry/surface_hit.h"
 #include "illum/util/error.h"
 
 namespace illum {
@@ -123,6 +124,25 @@ TEST(CoatedDiffuse, WhiteBaseLosesOnlyTruncatedWalks) {
     albedo_monte_carlo(grey, direction_deg(30, 0), 20000, 5, &mean, &se);
     EXPECT_LT(mean[0], 0.6);
     EXPECT_GT(mean[0], 0.3);
+}
+
+// Every name a model's constructor looks up is one of its spec's parameters, on the heap (every audit case)
+// and in the arena at a shading point: a misspelt "kd"_p would silently read zero.
+TEST(Registry, ConstructorsReadOnlyTheirSpecsParameters) {
+    int before = ModelArgs::misses();
+    ScratchArena arena;
+    SurfaceHit hit;
+    for (const ModelSpec& spec : bxdf_models())
+        for (const AuditCase& c : spec.audit_grid) {
+            ParamValues v = resolve_params(spec, c.params);
+            EXPECT_NE(spec.make(v), nullptr) << spec.name;
+            if (spec.factory.place) EXPECT_NE(spec.factory.place(ModelArgs(v.args, &hit), arena), nullptr);
+        }
+    EXPECT_EQ(ModelArgs::misses(), before);
+    const std::vector<ModelArg> no_args;
+    ModelArgs none(no_args, nullptr);
+    EXPECT_EQ(none.scalar("nonexistent"_p), 0.0f); // what a miss reads, counted
+    EXPECT_EQ(ModelArgs::misses(), before + 1);
 }
 
 TEST(Registry, RejectsBadInput) {

@@ -755,11 +755,15 @@ float model_eta(const ModelSpec& model, const ParamValues& values) {
 }
 
 const ModelArg& ModelArgs::get(ParamId id) const {
-    const ModelArg* v = find(id);
     // Every name a model's constructor reads is in its spec (the audit builds each model): a miss is a
-    // registry bug, never user input, and the first parameter stands in rather than throwing mid-render.
-    return v ? *v : args_.front();
+    // registry bug, never user input, and reads as zero rather than throwing in the middle of a render.
+    static const ModelArg none{};
+    const ModelArg* v = find(id);
+    if (!v) misses_.fetch_add(1, std::memory_order_relaxed);
+    return v ? *v : none;
 }
+
+std::atomic<int> ModelArgs::misses_{0};
 
 float ModelArgs::scalar(ParamId id) const {
     const ModelArg& v = get(id);

@@ -3,6 +3,7 @@
 // values (see each model's header); the registry only parses and validates strings.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -78,8 +79,11 @@ public:
     Color3 rgb(ParamId id) const;
     int integer(ParamId id) const { return int(scalar(id)); }
     const std::string& str(ParamId id) const { return get(id).text; }
+    // How many lookups named a parameter the model's spec does not have (a registry bug; tests assert 0).
+    static int misses() { return misses_.load(); }
 
 private:
+    static std::atomic<int> misses_;
     const ModelArg& get(ParamId id) const;
     Color3 raw_rgb(const ModelArg& v) const; // evaluated and clamped to the parameter's range
     const ModelArg* find(ParamId id) const {
