@@ -63,6 +63,14 @@ static_assert(!PowerHeuristicOf<SolidAnglePdf, AreaPdf>);
 static_assert(!PowerHeuristicOf<AreaPdf, SolidAnglePdf>);
 static_assert(!PowerHeuristicOf<SolidAnglePdf, float>);
 static_assert(!PowerHeuristicOf<float, float>);
+// Densities compare only within one measure.
+template <class A, class B>
+concept Comparable = requires(A a, B b) {
+    { a < b } -> std::same_as<bool>;
+};
+static_assert(Comparable<SolidAnglePdf, SolidAnglePdf>);
+static_assert(!Comparable<SolidAnglePdf, AreaPdf>);
+static_assert(!Comparable<SolidAnglePdf, float>);
 // A light-selection probability (a plain number) times a density keeps the density's measure.
 static_assert(std::is_same_v<Product<float, SolidAnglePdf>, SolidAnglePdf>);
 static_assert(std::is_same_v<Product<float, AreaPdf>, AreaPdf>);

@@ -31,7 +31,14 @@ struct Scalar {
     constexpr Scalar operator/(float s) const { return Scalar(value / s); }
     Scalar& operator+=(Scalar o) { return *this = *this + o; }
     Scalar& operator*=(float s) { return *this = *this * s; }
-    constexpr auto operator<=>(const Scalar&) const = default;
+    // Comparisons of the value (of one type only). Written out rather than a defaulted <=>: g++ 12 turns
+    // `p > Scalar(0)` through std::partial_ordering into an extra unordered/equal test.
+    constexpr bool operator==(Scalar o) const { return value == o.value; }
+    constexpr bool operator!=(Scalar o) const { return value != o.value; }
+    constexpr bool operator<(Scalar o) const { return value < o.value; }
+    constexpr bool operator<=(Scalar o) const { return value <= o.value; }
+    constexpr bool operator>(Scalar o) const { return value > o.value; }
+    constexpr bool operator>=(Scalar o) const { return value >= o.value; }
     bool is_finite() const { return std::isfinite(value); }
 };
 // A dimensionless scalar is a plain float.
