@@ -136,7 +136,9 @@ TEST(Registry, ConstructorsReadOnlyTheirSpecsParameters) {
         for (const AuditCase& c : spec.audit_grid) {
             ParamValues v = resolve_params(spec, c.params);
             EXPECT_NE(spec.make(v), nullptr) << spec.name;
-            if (spec.factory.place) EXPECT_NE(spec.factory.place(ModelArgs(v.args, &hit), arena), nullptr);
+            if (spec.factory.place) {
+                EXPECT_NE(spec.factory.place(ModelArgs(v.args, &hit), arena), nullptr);
+            }
         }
     EXPECT_EQ(ModelArgs::misses(), before);
     const std::vector<ModelArg> no_args;

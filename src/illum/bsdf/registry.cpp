@@ -614,7 +614,10 @@ namespace {
 std::string value_text(const Param& p) {
     if (!p.strings.empty()) return p.strings[0];
     std::string out;
-    for (double v : p.numbers) out += (out.empty() ? "" : ",") + fmt_num(v);
+    for (double v : p.numbers) {
+        if (!out.empty()) out += ',';
+        out += fmt_num(v);
+    }
     return out;
 }
 
