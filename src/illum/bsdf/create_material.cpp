@@ -6,7 +6,6 @@
 #include "illum/bsdf/pbrt_materials.h"
 #include "illum/bsdf/registry.h"
 #include "illum/bsdf/shared_bxdf_material.h"
-#include "illum/bsdf/textured_model_material.h"
 #include "illum/param/spectrum_param.h"
 #include "illum/radiometry/spectra.h"
 
@@ -197,9 +196,9 @@ private:
         AlbedoEstimate a = directional_albedo(*bxdf, {0, 0, 1}, spec.delta, 16, 4096, 1);
         Color3 albedo(float(a.mc[0]), float(a.mc[1]), float(a.mc[2]));
         if (!textured) return own(std::make_unique<SharedBxDFMaterial>(std::move(bxdf), albedo));
-        if (!spec.factory.place)
+        if (!spec.factory.textured)
             throw Error(m_.loc, fmt::format("material \"{}\" cannot have textured parameters", spec.name));
-        return own(std::make_unique<TexturedModelMaterial>(spec, std::move(values), albedo));
+        return own(spec.factory.textured(std::move(values), albedo, spec.normal_albedo));
     }
 
     const EntityDesc& m_;

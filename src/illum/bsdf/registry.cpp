@@ -18,6 +18,7 @@
 #include "illum/bsdf/phong.h"
 #include "illum/bsdf/rough_conductor.h"
 #include "illum/bsdf/rough_dielectric.h"
+#include "illum/bsdf/textured_model_material.h"
 #include "illum/bsdf/thin_dielectric.h"
 #include "illum/bsdf/toon.h"
 #include "illum/bsdf/torrance_sparrow.h"
@@ -191,8 +192,17 @@ struct ArenaMaker {
 };
 template <class F>
 ModelFactory factory(F f) {
+    static_assert(std::is_empty_v<F>, "a model's constructor lambda captures nothing");
     return {[f](const ModelArgs& p) { return f(p, HeapMaker{}); },
-            [f](const ModelArgs& p, ScratchArena& arena) { return f(p, ArenaMaker{arena}); }};
+            [](const ModelArgs& p, ScratchArena& arena) { return F{}(p, ArenaMaker{arena}); },
+            [](ParamValues values, Color3 albedo,
+               ModelFactory::NormalAlbedo normal_albedo) -> std::unique_ptr<Material> {
+                auto place = [](const ModelArgs& p, ScratchArena& arena) {
+                    return F{}(p, ArenaMaker{arena});
+                };
+                return std::make_unique<TexturedModelMaterial<decltype(place)>>(std::move(values), albedo,
+                                                                                normal_albedo);
+            }};
 }
 template <class F>
 ModelFactory heap_only(F f) {
@@ -757,42 +767,14 @@ float model_eta(const ModelSpec& model, const ParamValues& values) {
     return ModelArgs(values.args, nullptr).scalar(ParamId{ParamId::of(model.eta_param)});
 }
 
-const ModelArg& ModelArgs::get(ParamId id) const {
-    // Every name a model's constructor reads is in its spec (the audit builds each model): a miss is a
-    // registry bug, never user input, and reads as zero rather than throwing in the middle of a render.
+const ModelArg& ModelArgs::miss() {
+    // Every name a model's constructor reads is in its spec (a test builds each model and counts misses):
+    // a miss is a registry bug, never user input, and reads as zero rather than throwing mid-render.
     static const ModelArg none{};
-    const ModelArg* v = find(id);
-    if (!v) misses_.fetch_add(1, std::memory_order_relaxed);
-    return v ? *v : none;
+    misses_.fetch_add(1, std::memory_order_relaxed);
+    return none;
 }
 
 std::atomic<int> ModelArgs::misses_{0};
-
-float ModelArgs::scalar(ParamId id) const {
-    const ModelArg& v = get(id);
-    float x = v.scalar && at_ ? v.scalar->evaluate(*at_) : v.constant.r;
-    return std::clamp(std::isfinite(x) ? x : v.lo, v.lo, v.hi);
-}
-
-Color3 ModelArgs::raw_rgb(const ModelArg& v) const {
-    Color3 c = v.color && at_ ? v.color->evaluate(*at_) : v.constant;
-    for (int i = 0; i < 3; ++i) c[i] = std::clamp(std::isfinite(c[i]) ? c[i] : v.lo, v.lo, v.hi);
-    return c;
-}
-
-Color3 ModelArgs::rgb(ParamId id) const {
-    const ModelArg& v = get(id);
-    Color3 c = raw_rgb(v);
-    // Only textures can break a unit sum at a shading point; constants were checked by the constructor.
-    if (v.unit_sum_group < 0 || !at_) return c;
-    Color3 sum;
-    for (const ModelArg& w : args_)
-        if (w.unit_sum_group == v.unit_sum_group) sum += raw_rgb(w);
-    // Scaled to a hair below 1 (one part in 10^6), so float rounding of the sum cannot exceed the
-    // constructor's bound of 1.
-    for (int i = 0; i < 3; ++i)
-        if (sum[i] > 1) c[i] *= (1 - 1e-6f) / sum[i];
-    return c;
-}
 
 } // namespace illum

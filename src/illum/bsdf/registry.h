@@ -3,7 +3,9 @@
 // values (see each model's header); the registry only parses and validates strings.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -48,15 +50,16 @@ consteval ParamId operator""_p(const char* s, std::size_t n) { return {ParamId::
 // One parameter of a model after validation: its constant value or the texture that gives it, the range
 // that shading clamps a textured value to, and the group of parameters whose sum must stay <= 1.
 struct ModelArg {
-    std::string name; // for reports only
+    // What a shading point reads first, together (a lookup scans the ids of a model's few parameters).
     std::uint32_t id = 0;
-    ParamKind kind = ParamKind::Scalar;
-    Color3 constant;                      // Scalar, Rgb, Integer (in .r); a textured one's default
-    std::string text;                     // Choice, Path
+    int unit_sum_group = -1;              // index into ModelSpec::unit_sums, -1 for none
     const ColorTexture* color = nullptr;  // a textured Rgb parameter
     const FloatTexture* scalar = nullptr; // a textured Scalar parameter
+    Color3 constant;                      // Scalar, Rgb, Integer (in .r); a textured one's default
     float lo = 0, hi = 0;
-    int unit_sum_group = -1; // index into ModelSpec::unit_sums, -1 for none
+    ParamKind kind = ParamKind::Scalar;
+    std::string text; // Choice, Path
+    std::string name; // for reports only
 };
 
 // A model's validated parameters (defaults applied, in the order of the model's spec): what the tools,
@@ -83,8 +86,12 @@ public:
     static int misses() { return misses_.load(); }
 
 private:
+    static const ModelArg& miss(); // counted; reads as zero
     static std::atomic<int> misses_;
-    const ModelArg& get(ParamId id) const;
+    const ModelArg& get(ParamId id) const {
+        const ModelArg* v = find(id);
+        return v ? *v : miss();
+    }
     Color3 raw_rgb(const ModelArg& v) const; // evaluated and clamped to the parameter's range
     const ModelArg* find(ParamId id) const {
         for (const ModelArg& v : args_)
@@ -95,12 +102,50 @@ private:
     const TextureEvalContext* at_;
 };
 
+// Defined here so that a textured material's constructor inlines them (they run at every hit).
+// x clamped to [lo, hi], NaN to lo (the comparisons are false for NaN): two min/max instructions.
+inline float clamp_to_range(float x, float lo, float hi) { return x > lo ? (x < hi ? x : hi) : lo; }
+
+inline float ModelArgs::scalar(ParamId id) const {
+    const ModelArg& v = get(id);
+    float x = v.scalar && at_ ? v.scalar->evaluate(*at_) : v.constant.r;
+    return clamp_to_range(x, v.lo, v.hi);
+}
+
+inline Color3 ModelArgs::raw_rgb(const ModelArg& v) const {
+    Color3 c = v.color && at_ ? v.color->evaluate(*at_) : v.constant;
+    for (int i = 0; i < 3; ++i) c[i] = clamp_to_range(c[i], v.lo, v.hi);
+    return c;
+}
+
+inline Color3 ModelArgs::rgb(ParamId id) const {
+    const ModelArg& v = get(id);
+    Color3 c = raw_rgb(v);
+    // Only textures can break a unit sum at a shading point; constants were checked by the constructor.
+    if (v.unit_sum_group < 0 || !at_) return c;
+    Color3 sum;
+    for (const ModelArg& w : args_)
+        if (w.unit_sum_group == v.unit_sum_group) sum += raw_rgb(w);
+    // Scaled to a hair below 1 (one part in 10^6), so float rounding of the sum cannot exceed the
+    // constructor's bound of 1.
+    for (int i = 0; i < 3; ++i)
+        if (sum[i] > 1) c[i] *= (1 - 1e-6f) / sum[i];
+    return c;
+}
+
+class Material;
+
 // A model's constructors: on the heap (tools, audits, constant materials), or in the arena at a shading
-// point (textured materials; null for a model that cannot be placed there, such as the measured one with
-// its shared table).
+// point; and a textured material that places the model per hit with the constructor inlined into it
+// (both null for a model that cannot be placed in the arena, such as the measured one with its shared
+// table).
 struct ModelFactory {
+    using Place = const BxDF* (*)(const ModelArgs&, ScratchArena&);
+    using NormalAlbedo = Color3 (*)(const ModelArgs&);
+    using MakeTextured = std::unique_ptr<Material> (*)(ParamValues values, Color3 albedo, NormalAlbedo);
     std::function<std::unique_ptr<BxDF>(const ModelArgs&)> make;
-    std::function<const BxDF*(const ModelArgs&, ScratchArena&)> place;
+    Place place = nullptr;
+    MakeTextured textured = nullptr;
 };
 
 struct AuditCase {
@@ -123,7 +168,7 @@ struct ModelSpec {
     std::vector<std::vector<std::string>> unit_sums = {};
     // The directional albedo at normal incidence in closed form, where the model has one (the albedo pass
     // shows it at each hit of a textured material; otherwise it shows the estimate at the defaults).
-    std::function<Color3(const ModelArgs&)> normal_albedo = {};
+    ModelFactory::NormalAlbedo normal_albedo = nullptr;
 
     std::unique_ptr<BxDF> make(const ParamValues& values) const {
         return factory.make(ModelArgs(values.args, nullptr));
