@@ -40,8 +40,8 @@ public:
         return smooth_ ? flat_.sample_lobes(wo, uc, u, mode, lobes)
                        : rough_.sample_lobes(wo, uc, u, mode, lobes);
     }
-    float pdf(Vector3f wo, Vector3f wi, TransportMode mode, Lobes lobes = Lobes::All) const {
-        return smooth_ ? 0 : rough_.pdf_lobes(wo, wi, mode, lobes).value;
+    SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode mode, Lobes lobes = Lobes::All) const {
+        return smooth_ ? SolidAnglePdf(0) : rough_.pdf_lobes(wo, wi, mode, lobes);
     }
 
 private:

@@ -69,9 +69,8 @@ inline float layer_transmittance(float dz, Vector3f w) {
     if (std::abs(dz) <= 1e-30f) return 1;
     return std::exp(-std::abs(dz / w.z));
 }
-inline float mis_power(float a, float b) { return a * a / (a * a + b * b); }
 inline bool usable(const std::optional<BSDFSample>& s) {
-    return s && !s->f.is_black() && s->pdf.value > 0 && s->wi.z != 0;
+    return s && !s->f.is_black() && s->pdf > SolidAnglePdf(0) && s->wi.z != 0;
 }
 } // namespace bsdf_detail
 
@@ -126,16 +125,16 @@ public:
         auto r = [&] { return rng.uniform(); };
         auto r2 = [&] { return rng.uniform2(); };
         // The coat's own reflection (zero for a smooth coat: a delta).
-        Color3 sum = coat_.f(wo, wi, mode).rgb * float(samples_);
+        Bsdf3 sum = coat_.f(wo, wi, mode) * float(samples_);
         for (int s = 0; s < samples_; ++s) {
             auto wos = coat_.sample(wo, r(), r2(), mode, Lobes::Transmission);
             if (!usable(wos)) continue;
             auto wis = coat_.sample(wi, r(), r2(), adjoint(mode), Lobes::Transmission);
             if (!usable(wis)) continue;
             Color3 beta = wos->weight();
-            Color3 exit_weight = wis->f.rgb / wis->pdf.value; // without the cosine, which the event gives
-            Vector3f exit_dir = -wis->wi; // the inner direction of travel that leaves along wi
-            Vector3f w = wos->wi;         // direction of travel, down into the layer
+            Color3 exit_weight = wis->f / wis->pdf; // without the cosine, which the event gives
+            Vector3f exit_dir = -wis->wi;           // the inner direction of travel that leaves along wi
+            Vector3f w = wos->wi;                   // direction of travel, down into the layer
             float z = h;
             for (int depth = 0; depth < max_depth_; ++depth) {
                 if (depth > 3 && beta.max_component() < kRouletteWeight) {
@@ -151,8 +150,8 @@ public:
                     if (zp == z) continue;
                     if (zp > 0 && zp < h) {
                         // Scattering in the medium: next-event estimate through the exit direction.
-                        float p_exit = medium_phase().p(dot(w, exit_dir));
-                        float wt = coat_specular ? 1 : mis_power(wis->pdf.value, p_exit);
+                        SolidAnglePdf p_exit(medium_phase().p(dot(w, exit_dir))); // a phase function: a pdf
+                        float wt = coat_specular ? 1 : power_heuristic(wis->pdf, p_exit);
                         sum += beta * medium_.albedo * exit_weight *
                                (p_exit * wt * layer_transmittance(zp - h, exit_dir));
                         float pdf_phase;
@@ -162,7 +161,7 @@ public:
                         w = wn;
                         z = zp;
                         if (!coat_specular && w.z > 0)
-                            sum += through_rough_coat(beta, w, wi, pdf_phase, mode) *
+                            sum += through_rough_coat(beta, w, wi, SolidAnglePdf(pdf_phase), mode) *
                                    layer_transmittance(zp - h, w);
                         continue;
                     }
@@ -181,10 +180,9 @@ public:
                 if (!base_specular_) {
                     Bsdf3 fb = base_.f(-w, exit_dir, mode);
                     if (!fb.is_black()) {
-                        float wt = coat_specular
-                                       ? 1
-                                       : mis_power(wis->pdf.value, base_.pdf(-w, exit_dir, mode).value);
-                        sum += beta * fb.rgb * exit_weight *
+                        float wt =
+                            coat_specular ? 1 : power_heuristic(wis->pdf, base_.pdf(-w, exit_dir, mode));
+                        sum += beta * fb * exit_weight *
                                (std::abs(exit_dir.z) * wt * layer_transmittance(h, exit_dir));
                     }
                 }
@@ -193,11 +191,12 @@ public:
                 beta *= bs->weight();
                 w = bs->wi;
                 if (!coat_specular)
-                    sum += through_rough_coat(beta, w, wi, base_specular_ ? 0 : bs->pdf.value, mode) *
-                           layer_transmittance(h, w);
+                    sum +=
+                        through_rough_coat(beta, w, wi, base_specular_ ? SolidAnglePdf(0) : bs->pdf, mode) *
+                        layer_transmittance(h, w);
             }
         }
-        return Bsdf3(sum / float(samples_));
+        return sum / float(samples_);
     }
 
     std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override {
@@ -216,6 +215,9 @@ public:
         auto r = [&] { return rng.uniform(); };
         auto r2 = [&] { return rng.uniform2(); };
         const float h = medium_.thickness;
+        // The walk's products of f |cos| and of pdfs over its events: their units depend on the number of
+        // events, so they are carried as numbers and only their ratio (dimensionless) is meaningful; the
+        // sample returns them as a BSDF value and a pdf proportional to the true ones.
         Color3 f = bs->f.rgb * std::abs(bs->wi.z);
         float pdf = bs->pdf.value;
         bool specular = bs->is_specular();
@@ -281,14 +283,14 @@ public:
         auto r2 = [&] { return rng.uniform2(); };
         // The coat reflects with probability about R(cos θo) (exactly, for a smooth coat); the rest enters.
         float enter = 1 - coat_.fresnel_reflectance(wo.z);
-        float through = 0;
+        SolidAnglePdf through(0);
         for (int s = 0; s < samples_; ++s) {
             auto wos = coat_.sample(wo, r(), r2(), mode, Lobes::Transmission);
             auto wis = coat_.sample(wi, r(), r2(), adjoint(mode), Lobes::Transmission);
             if (!usable(wos) || !usable(wis)) continue;
             Vector3f down = wos->wi, exit_dir = -wis->wi;
             if (coat_.is_specular()) {
-                through += base_.pdf(-down, exit_dir, mode).value;
+                through += base_.pdf(-down, exit_dir, mode);
                 continue;
             }
             // Two estimates of the density of the base's direction through a rough coat, by MIS.
@@ -297,14 +299,15 @@ public:
             if (base_specular_) {
                 through += coat_.pdf(-bs->wi, wi, mode);
             } else {
-                float p_base = base_.pdf(-down, exit_dir, mode).value;
-                through += mis_power(wis->pdf.value, p_base) * p_base;
-                float p_coat = coat_.pdf(-bs->wi, wi, mode);
-                through += mis_power(bs->pdf.value, p_coat) * p_coat;
+                SolidAnglePdf p_base = base_.pdf(-down, exit_dir, mode);
+                through += power_heuristic(wis->pdf, p_base) * p_base;
+                SolidAnglePdf p_coat = coat_.pdf(-bs->wi, wi, mode);
+                through += power_heuristic(bs->pdf, p_coat) * p_coat;
             }
         }
-        float p = coat_.pdf(wo, wi, mode) + enter * through / float(samples_);
-        return SolidAnglePdf(0.9f * p + 0.1f / (4 * kPi));
+        SolidAnglePdf p = coat_.pdf(wo, wi, mode) + enter * through / float(samples_);
+        // A tenth of the density is uniform over the sphere, as pbrt-v4 does.
+        return 0.9f * p + SolidAnglePdf(0.1f / (4 * kPi));
     }
 
 private:
@@ -326,13 +329,15 @@ private:
     // upwards) that was sampled with density pdf_w (0: a delta, no MIS): beta f_coat(-w, wi) weighed
     // against the next-event estimate, whose density for the same inner direction is that of refracting
     // wi inwards (adjoint mode).
-    Color3 through_rough_coat(Color3 beta, Vector3f w, Vector3f wi, float pdf_w, TransportMode mode) const {
+    Bsdf3 through_rough_coat(Color3 beta, Vector3f w, Vector3f wi, SolidAnglePdf pdf_w,
+                             TransportMode mode) const {
         using namespace bsdf_detail;
         Bsdf3 fc = coat_.f(-w, wi, mode);
-        if (fc.is_black()) return Color3(0.0f);
+        if (fc.is_black()) return Bsdf3();
         float wt = 1;
-        if (pdf_w > 0) wt = mis_power(pdf_w, coat_.pdf(wi, -w, adjoint(mode), Lobes::Transmission));
-        return beta * fc.rgb * wt;
+        if (pdf_w > SolidAnglePdf(0))
+            wt = power_heuristic(pdf_w, coat_.pdf(wi, -w, adjoint(mode), Lobes::Transmission));
+        return beta * fc * wt;
     }
 
     DielectricInterface coat_;
