@@ -36,8 +36,8 @@ double expect_radiance(const RenderResult& r, double expected, const std::string
 }
 
 // Inside a sphere that emits Le and reflects with Lambertian albedo ρ, radiance is Le / (1 - ρ) in every
-// direction (unbounded depth, Russian roulette). Short test: 24² pixels × 32 spp; here 64² × 256
-// (~57x the samples, standard error ~7.5x smaller).
+// direction (unbounded depth, Russian roulette). Short test: 24² pixels × 32 spp; here 64² × 1024
+// (~228x the samples, standard error ~15x smaller).
 TEST(RadiometryLong, ClosedFurnaceManySamples) {
     for (double rho : {0.5, 0.8, 0.95}) {
         const double le = 0.7;
@@ -55,7 +55,7 @@ Shape "sphere" "float radius" [1]
                                         fmt::arg("rho", rho), fmt::arg("le", le));
         RenderSetup s;
         s.max_depth = -1;
-        s.spp = 256;
+        s.spp = 1024;
         double expected = le / (1 - rho);
         double tol = expect_radiance(render_pbrt(scene, s), expected, fmt::format("furnace rho={}", rho), 1e-4);
         // The check is meaningful: the tolerance is well under 1% of the answer.
