@@ -8,7 +8,7 @@
 #include <string>
 
 #include "illum/scene/pbrt/parser.h"
-#include "illum/scene/pbrt/ply.h"
+#include "illum/geometry/ply.h"
 
 namespace {
 

@@ -19,10 +19,10 @@
 #include <exception>
 #include <string>
 
+#include "illum/geometry/ply.h"
 #include "illum/render/renderer.h"
 #include "illum/scene/build.h"
 #include "illum/scene/pbrt/parser.h"
-#include "illum/scene/pbrt/ply.h"
 #include "illum/util/error.h"
 
 namespace {

@@ -10,9 +10,9 @@
 #include <fmt/core.h>
 
 #include "commands.h"
-#include "illum/analysis/albedo.h"
 #include "illum/analysis/audit.h"
 #include "illum/analysis/gallery.h"
+#include "illum/bsdf/albedo.h"
 #include "illum/bsdf/conductor.h"
 #include "illum/bsdf/fresnel.h"
 #include "illum/bsdf/registry.h"
@@ -146,7 +146,7 @@ void add_brdf_command(CLI::App& app) {
         ParamValues values = resolve_params(spec, parse_kv(opt->params));
         auto bxdf = spec.make(values);
         std::string ps;
-        for (const auto& [k, v] : values.all()) ps += (ps.empty() ? "" : " ") + k + "=" + v;
+        ps = values.describe();
         fmt::print("# {} {}\n", spec.name, ps);
         fmt::print(
             "# albedo = ∫ f(wo,wi) |cos θi| dωi (importance mode), RGB; MC: {} samples, ± 1 standard error\n",

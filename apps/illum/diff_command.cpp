@@ -1,5 +1,6 @@
 // `illum diff IMAGE REFERENCE`: channel means of both, their relative differences, and the per-pixel
-// error metrics (RMSE, relMSE, mean relative error) when the sizes agree.
+// error metrics (RMSE, relMSE, mean relative error) when the sizes agree; pixels with Inf/NaN are left
+// out of all of them and counted.
 #include <fmt/core.h>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -23,42 +24,51 @@ nlohmann::json to_json(const ErrorStats& s) {
 
 void run(const DiffArgs& args) {
     Image a = read_image(args.image), b = read_image(args.reference);
-    ErrorStats ma = channel_means(a), mb = channel_means(b), rel = relative_mean_difference(a, b);
-    bool same_size = a.width() == b.width() && a.height() == b.height();
+    // Pixels with an Inf or NaN are left out (and counted): one of them would turn every figure into Inf
+    // or NaN and hide how the rest of the image compares.
+    const FiniteComparison d = compare_finite(a, b);
     if (args.json) {
-        nlohmann::json j = {{"image", args.image},
-                            {"reference", args.reference},
-                            {"mean", to_json(ma)},
-                            {"reference_mean", to_json(mb)},
-                            {"relative_mean_difference", to_json(rel)}};
-        if (same_size) {
-            j["rmse"] = to_json(rmse(a, b));
-            j["relmse"] = to_json(rel_mse(a, b));
-            j["mean_relative_error"] = to_json(mean_relative_error(a, b));
+        nlohmann::json j = {
+            {"image", args.image},
+            {"reference", args.reference},
+            {"nonfinite_pixels", {{"image", d.nonfinite}, {"reference", d.reference_nonfinite}}},
+            {"mean", to_json(d.mean)},
+            {"reference_mean", to_json(d.reference_mean)},
+            {"relative_mean_difference", to_json(d.relative_mean_difference)}};
+        if (d.rmse) {
+            j["compared_pixels"] = d.compared;
+            j["rmse"] = to_json(*d.rmse);
+            j["relmse"] = to_json(*d.rel_mse);
+            j["mean_relative_error"] = to_json(*d.mean_relative_error);
         }
         fmt::print("{}\n", j.dump(2));
         return;
     }
-    auto row = [](const char* name, const ErrorStats& s, const char* fmt_spec) {
+    // Explicit right alignment: fmt aligns inf and nan to the left otherwise (a mean difference is inf
+    // when a reference mean is 0), which breaks the columns.
+    auto row = [](const std::string& name, const ErrorStats& s, const char* fmt_spec) {
         fmt::print("{:<26}", name);
         for (double v : s.channel) fmt::print(fmt::runtime(fmt_spec), v);
         fmt::print(fmt::runtime(fmt_spec), s.overall);
         fmt::print("\n");
     };
     fmt::print("{:<26}{:>12}{:>12}{:>12}{:>12}\n", "", "R", "G", "B", "all");
-    row(fmt::format("mean {}x{}", a.width(), a.height()).c_str(), ma, "{:12.6g}");
-    row(fmt::format("reference mean {}x{}", b.width(), b.height()).c_str(), mb, "{:12.6g}");
-    ErrorStats pct = rel;
+    row(fmt::format("mean {}x{}", a.width(), a.height()), d.mean, "{:>12.6g}");
+    row(fmt::format("reference mean {}x{}", b.width(), b.height()), d.reference_mean, "{:>12.6g}");
+    ErrorStats pct = d.relative_mean_difference;
     for (double& v : pct.channel) v *= 100;
     pct.overall *= 100;
-    row("mean difference (%)", pct, "{:12.3f}");
-    if (same_size) {
-        row("RMSE", rmse(a, b), "{:12.5g}");
-        row("relMSE", rel_mse(a, b), "{:12.5g}");
-        row("mean relative error", mean_relative_error(a, b), "{:12.5g}");
+    row("mean difference (%)", pct, "{:>12.3f}");
+    if (d.rmse) {
+        row("RMSE", *d.rmse, "{:>12.5g}");
+        row("relMSE", *d.rel_mse, "{:>12.5g}");
+        row("mean relative error", *d.mean_relative_error, "{:>12.5g}");
     } else {
         fmt::print("(sizes differ: per-pixel metrics skipped)\n");
     }
+    if (d.nonfinite || d.reference_nonfinite)
+        fmt::print("excluded {} pixel{} with Inf/NaN in {}, {} in {}\n", d.nonfinite,
+                   d.nonfinite == 1 ? "" : "s", args.image, d.reference_nonfinite, args.reference);
 }
 
 } // namespace

@@ -12,7 +12,7 @@
 #include "illum/envmap/spherical_harmonics.h"
 #include "illum/image/file_bytes.h"
 #include "illum/image/image_io.h"
-#include "illum/render/progress.h"
+#include "illum/util/progress.h"
 #include "illum/util/error.h"
 
 namespace illum::cli {

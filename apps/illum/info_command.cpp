@@ -26,7 +26,7 @@ std::string counts(const std::map<std::string, int>& m) {
 }
 
 void run(const InfoArgs& args) {
-    SceneDesc desc = load_scene_desc(args.scene);
+    SceneDesc desc = load_scene_desc(args.scene, args.strict);
     BuildOptions opt;
     opt.strict = args.strict;
     std::unique_ptr<Scene> scene = build_scene(desc, opt);

@@ -94,7 +94,7 @@ void run(const RenderArgs& args) {
     for (const auto& o : args.outputs) check_output(o);
     if (!args.stats.empty()) check_output_folder_only(args.stats);
 
-    SceneDesc desc = load_scene_desc(args.scene);
+    SceneDesc desc = load_scene_desc(args.scene, args.strict);
     if (!args.resolution.empty()) {
         auto [w, h] = parse_resolution(args.resolution);
         desc.set_film_resolution(w, h);

@@ -10,14 +10,16 @@
 
 namespace illum::cli {
 
-SceneDesc load_scene_desc(const std::string& path) {
+SceneDesc load_scene_desc(const std::string& path, bool strict) {
     if (path.empty()) return builtin_cornell_box();
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))
         throw Error(fmt::format("cannot open scene \"{}\": no such file", path));
     if (std::filesystem::is_directory(path, ec))
         throw Error(fmt::format("cannot open scene \"{}\": it is a directory", path));
-    return parse_pbrt_file(path);
+    ParseOptions options;
+    options.strict = strict;
+    return parse_pbrt_file(path, options);
 }
 
 void print_warnings(const std::vector<std::string>& warnings) {

@@ -7,7 +7,8 @@
 
 namespace illum::cli {
 
-SceneDesc load_scene_desc(const std::string& path);
+// `strict` (--strict): the parser's warnings are errors, as the builder's are with BuildOptions::strict.
+SceneDesc load_scene_desc(const std::string& path, bool strict = false);
 // Prints each warning as `warning: ...` on stderr.
 void print_warnings(const std::vector<std::string>& warnings);
 

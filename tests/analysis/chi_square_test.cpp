@@ -2,7 +2,7 @@
 // correct sampler, and rejection of deliberately mis-weighted pdfs.
 #include <gtest/gtest.h>
 
-#include "illum/analysis/albedo.h"
+#include "illum/bsdf/albedo.h"
 #include "illum/analysis/audit.h"
 #include "illum/analysis/stats.h"
 #include "illum/analysis/weighted_histogram_test.h"

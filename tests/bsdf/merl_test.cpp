@@ -6,7 +6,7 @@
 #include <fstream>
 #include <random>
 
-#include "illum/analysis/albedo.h"
+#include "illum/bsdf/albedo.h"
 #include "illum/bsdf/conductor.h"
 #include "illum/bsdf/merl.h"
 #include "illum/bsdf/rough_conductor.h"

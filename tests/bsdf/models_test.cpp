@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "illum/analysis/albedo.h"
+#include "illum/bsdf/albedo.h"
 #include "illum/bsdf/coated.h"
 #include "illum/bsdf/conductor.h"
 #include "illum/bsdf/dielectric.h"
@@ -12,6 +12,7 @@
 #include "illum/bsdf/lambert.h"
 #include "illum/bsdf/registry.h"
 #include "illum/bsdf/thin_dielectric.h"
+#include "illum/geometry/surface_hit.h"
 #include "illum/util/error.h"
 
 namespace illum {
@@ -125,6 +126,27 @@ TEST(CoatedDiffuse, WhiteBaseLosesOnlyTruncatedWalks) {
     EXPECT_GT(mean[0], 0.3);
 }
 
+// Every name a model's constructor looks up is one of its spec's parameters, on the heap (every audit case)
+// and in the arena at a shading point: a misspelt "kd"_p would silently read zero.
+TEST(Registry, ConstructorsReadOnlyTheirSpecsParameters) {
+    int before = ModelArgs::misses();
+    ScratchArena arena;
+    SurfaceHit hit;
+    for (const ModelSpec& spec : bxdf_models())
+        for (const AuditCase& c : spec.audit_grid) {
+            ParamValues v = resolve_params(spec, c.params);
+            EXPECT_NE(spec.make(v), nullptr) << spec.name;
+            if (spec.factory.place) {
+                EXPECT_NE(spec.factory.place(ModelArgs(v.args, &hit), arena), nullptr);
+            }
+        }
+    EXPECT_EQ(ModelArgs::misses(), before);
+    const std::vector<ModelArg> no_args;
+    ModelArgs none(no_args, nullptr);
+    EXPECT_EQ(none.scalar("nonexistent"_p), 0.0f); // what a miss reads, counted
+    EXPECT_EQ(ModelArgs::misses(), before + 1);
+}
+
 TEST(Registry, RejectsBadInput) {
     auto expect_error = [](const std::string& model, std::map<std::string, std::string> p,
                            const std::string& needle) {
@@ -145,7 +167,8 @@ TEST(Registry, RejectsBadInput) {
     expect_error("phong", {{"kd", "0.8"}, {"ks", "0.8"}}, "kd + ks");
     expect_error("rough-conductor", {{"distribution", "phong"}}, "one of ggx, beckmann");
     expect_error("merl", {}, "'file' is required");
-    expect_error("merl", {{"file", "/nonexistent/x.binary"}}, "cannot open");
+    expect_error("merl", {{"file", "/nonexistent/x.binary"}},
+                 "cannot open MERL file '/nonexistent/x.binary': No such file or directory");
     // Constructors validate too.
     EXPECT_THROW(DielectricBxDF(-1.0f), Error);
     EXPECT_THROW(ConductorBxDF(Color3(0), Color3(1)), Error);

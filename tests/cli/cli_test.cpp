@@ -7,10 +7,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+
+#include "illum/image/image_io.h"
 
 namespace {
 
@@ -140,6 +143,75 @@ TEST_F(Cli, UnusedParametersWarnAndStrictRefuses) {
         << r.err;
     expect_error(illum("render u.pbrt --spp 1 --strict -o v.exr", dir_), "u.pbrt:3:35:");
     EXPECT_FALSE(fs::exists(dir_ / "v.exr"));
+}
+
+// A scene that ends before WorldBegin would render nothing: it is an error at its end, as in pbrt-v4.
+TEST_F(Cli, SceneWithoutWorldIsAnError) {
+    write_text(dir_ / "empty.pbrt", "");
+    expect_error(illum("render empty.pbrt -o x.exr", dir_),
+                 "error: empty.pbrt:1:1: End of files before WorldBegin");
+    write_text(dir_ / "options.pbrt", "Film \"rgb\" \"integer xresolution\" [8]\nCamera \"perspective\"\n");
+    expect_error(illum("render options.pbrt -o x.exr", dir_),
+                 "error: options.pbrt:3:1: End of files before WorldBegin");
+    EXPECT_FALSE(fs::exists(dir_ / "x.exr"));
+}
+
+// The parser's warnings (here: media) are errors under --strict too, not only the builder's.
+TEST_F(Cli, StrictRefusesParserWarnings) {
+    write_text(dir_ / "fog.pbrt", "Film \"rgb\" \"integer xresolution\" [8] \"integer yresolution\" [8]\n"
+                                  "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+                                  "WorldBegin\nShape \"sphere\"\n");
+    CliRun r = illum("render fog.pbrt --spp 1 -o u.exr", dir_);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("warning: fog.pbrt:2:1: participating media are not supported"), std::string::npos)
+        << r.err;
+    expect_error(illum("render fog.pbrt --spp 1 --strict -o v.exr", dir_),
+                 "error: fog.pbrt:2:1: participating media are not supported");
+    EXPECT_FALSE(fs::exists(dir_ / "v.exr"));
+    EXPECT_EQ(illum("info fog.pbrt", dir_).exit_code, 0);
+    expect_error(illum("info fog.pbrt --strict", dir_), "error: fog.pbrt:2:1: participating media");
+}
+
+// The lines of `illum diff`'s table (up to the first line that is not a row), each of the same width.
+void expect_aligned_table(const std::string& out) {
+    std::istringstream in(out);
+    std::string header, line;
+    ASSERT_TRUE(std::getline(in, header));
+    int rows = 0;
+    while (std::getline(in, line) && line.rfind("excluded", 0) != 0) {
+        EXPECT_EQ(line.size(), header.size()) << "misaligned row: \"" << line << "\" in\n" << out;
+        ++rows;
+    }
+    EXPECT_EQ(rows, 6) << out;
+}
+
+// Pixels with Inf/NaN are left out of `illum diff`'s figures, counted, and the table stays aligned.
+TEST_F(Cli, DiffExcludesNonFinitePixels) {
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    illum::Image a(2, 2, illum::Color3(1.0f)), b(2, 2, illum::Color3(1.0f));
+    a(1, 0) = {inf, 1, 1};
+    a(0, 1) = {nan, 2, 2};
+    b(1, 1) = {-inf, 1, 1};
+    illum::write_image(a, (dir_ / "a.pfm").string());
+    illum::write_image(b, (dir_ / "b.pfm").string());
+    CliRun r = illum("diff a.pfm b.pfm", dir_);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("excluded 2 pixels with Inf/NaN in a.pfm, 1 in b.pfm"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("inf"), std::string::npos) << r.out;
+    expect_aligned_table(r.out);
+    auto j = nlohmann::json::parse(illum("diff --json a.pfm b.pfm", dir_).out);
+    EXPECT_EQ(j["nonfinite_pixels"]["image"], 2);
+    EXPECT_EQ(j["nonfinite_pixels"]["reference"], 1);
+    EXPECT_EQ(j["compared_pixels"], 1);
+    EXPECT_DOUBLE_EQ(double(j["rmse"]["all"]), 0.0);
+
+    // A reference channel of mean 0 gives an infinite mean difference: still in its column.
+    illum::write_image(illum::Image(2, 2, illum::Color3(0, 1, 1)), (dir_ / "z.pfm").string());
+    r = illum("diff a.pfm z.pfm", dir_);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    expect_aligned_table(r.out);
+    EXPECT_NE(r.out.find("excluded 2 pixels with Inf/NaN in a.pfm, 0 in z.pfm"), std::string::npos) << r.out;
 }
 
 TEST_F(Cli, MissingSceneFile) {

@@ -99,20 +99,34 @@ std::pair<double, double> irradiance_differences(const EnvironmentMap& a, const 
 
 TEST(SphericalHarmonics, IrradianceAgainstBruteForceOnRealMaps) {
     if (!test::have_shared()) GTEST_SKIP() << "no shared data";
-    for (const char* name : {"grace.hdr", "pisa.hdr", "uffizi.hdr"}) {
+    // The bound on mean |difference| / mean E per map. pisa and uffizi are within 3% (measured 1.85% and
+    // 2.91%). grace.hdr is dominated by small, very bright windows whose irradiance has more energy above
+    // order 2 than the 9 coefficients keep: measured 5.22%, a property of the truncation, not a defect;
+    // 6% leaves room for the brute-force estimate's sampling and still catches a broken projection (the
+    // order-0 term alone, checked below, is 10 to 25 times worse).
+    struct Case {
+        const char* name;
+        double bound;
+    };
+    for (const Case& c : {Case{"grace.hdr", 0.06}, Case{"pisa.hdr", 0.03}, Case{"uffizi.hdr", 0.03}}) {
+        const char* name = c.name;
         auto map = EnvironmentMap::load(test::shared_dir() + "/data/envmaps/" + name);
-        EnvironmentMap sh = sh_irradiance_map(project_sh(map), EnvLayout::LatLong, 32);
+        SH9 coefficients = project_sh(map);
+        EnvironmentMap sh = sh_irradiance_map(coefficients, EnvLayout::LatLong, 32);
         EnvironmentMap bf = brute_force_irradiance(map, EnvLayout::LatLong, 32, 64);
         auto [err, rel] = irradiance_differences(sh, bf);
         RecordProperty(fmt::format("sh_vs_bruteforce_{}", name), fmt::format("{:.4f}", err));
         std::printf("%s: SH vs brute-force irradiance: mean |difference| / mean E = %.2f%%, mean relative "
                     "difference per direction = %.2f%%\n",
                     name, 100 * err, 100 * rel);
-        // grace.hdr is dominated by small, very bright windows: the order-2 truncation leaves ~5% there
-        // (reported, not asserted); pisa and uffizi are within the 3% bound.
-        if (std::string(name) != "grace.hdr") {
-            EXPECT_LT(err, 0.03) << name;
-        }
+        EXPECT_LT(err, c.bound) << name;
+        // Orders 1 and 2 carry the map's directionality: without them (a constant irradiance) the
+        // difference is far larger, so the bound above says something even where it is loose.
+        SH9 order0 = coefficients;
+        for (int i = 1; i < 9; ++i) order0.c[i] = {0, 0, 0};
+        auto [err0, rel0] = irradiance_differences(sh_irradiance_map(order0, EnvLayout::LatLong, 32), bf);
+        std::printf("%s: order 0 only: %.2f%%\n", name, 100 * err0);
+        EXPECT_LT(err, 0.5 * err0) << name;
     }
 }
 

@@ -198,7 +198,7 @@ TEST(AnalyticIntersection, SpawnedRaysDoNotSelfIntersect) {
         PCG32 rng(7);
         int self_hits = 0, n = 20000;
         for (int i = 0; i < n; ++i) {
-            ShapeSample s = shape->sample_area({rng.uniform_float(), rng.uniform_float()});
+            AreaShapeSample s = shape->sample_area({rng.uniform_float(), rng.uniform_float()});
             Vector3f w = sample_uniform_sphere({rng.uniform_float(), rng.uniform_float()});
             bool outwards = dot(w, s.n) > 0;
             // A grazing ray inwards has a legitimately short chord: leave those out of the inside check.

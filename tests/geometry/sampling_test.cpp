@@ -81,8 +81,8 @@ void expect_uniform(const AnalyticShape& shape, double phimax, Coord coord, OnSu
     PCG32 rng(11);
     int off_surface = 0;
     for (int i = 0; i < n; ++i) {
-        ShapeSample s = shape.sample_area({rng.uniform_float(), rng.uniform_float()});
-        EXPECT_NEAR(s.pdf, 1 / shape.area(), 1e-5f / shape.area());
+        AreaShapeSample s = shape.sample_area({rng.uniform_float(), rng.uniform_float()});
+        EXPECT_NEAR(s.pdf.value, 1 / shape.area(), 1e-5f / shape.area());
         Point3f p = object_point(shape, s.p);
         double a = coord(p), phi = phi_of(p);
         // φ near 2π may read as near 0 after rounding.
@@ -135,10 +135,10 @@ TEST(AnalyticSampling, NonUniformScaleKeepsAnExactPdf) {
         MeanAccumulator inv_pdf;
         PCG32 rng(3);
         for (int i = 0; i < 100000; ++i) {
-            ShapeSample s = shape->sample_area({rng.uniform_float(), rng.uniform_float()});
-            inv_pdf.add(1 / double(s.pdf));
+            AreaShapeSample s = shape->sample_area({rng.uniform_float(), rng.uniform_float()});
+            inv_pdf.add(1 / double(s.pdf.value));
             if (i < 1000) {
-                EXPECT_NEAR(shape->area_pdf(s.p), s.pdf, 1e-4f * s.pdf);
+                EXPECT_NEAR(shape->area_pdf(s.p).value, s.pdf.value, 1e-4f * s.pdf.value);
             }
         }
         EXPECT_NEAR(inv_pdf.mean, shape->area(), 4 * inv_pdf.std_error()) << "SE " << inv_pdf.std_error();
@@ -158,8 +158,8 @@ void expect_solid_angle_pdf(const AnalyticShape& shape, Point3f p, bool near_sid
         auto s = shape.sample(ctx, {rng.uniform_float(), rng.uniform_float()});
         if (!s) continue;
         Vector3f wi = normalize(s->p - p);
-        float pdf = shape.pdf(ctx, wi, s->p, s->n);
-        mismatches += !(std::abs(pdf - s->pdf) <= 2e-3f * s->pdf);
+        float pdf = shape.pdf(ctx, wi, s->p, s->n).value;
+        mismatches += !(std::abs(pdf - s->pdf.value) <= 2e-3f * s->pdf.value);
     }
     EXPECT_LE(mismatches, 2) << what << ": sample() and pdf() disagree";
 
@@ -179,7 +179,7 @@ void expect_solid_angle_pdf(const AnalyticShape& shape, Point3f p, bool near_sid
         double sum = 0;
         for (int k = 0; k < n; ++k) {
             SurfaceHit h = shape.alpha_point(cr[k]);
-            sum += shape.pdf(ctx, w, h.p, h.n);
+            sum += shape.pdf(ctx, w, h.p, h.n).value;
         }
         integral.add(sum * cone);
     }

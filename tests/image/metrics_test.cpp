@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "illum/util/error.h"
 
@@ -81,6 +82,48 @@ TEST(Metrics, MeansAndRelativeMeanDifference) {
     EXPECT_EQ(z.channel[0], 0.0);
     EXPECT_TRUE(std::isinf(z.channel[1]) && z.channel[1] > 0);
     EXPECT_TRUE(std::isinf(z.channel[2]) && z.channel[2] < 0);
+}
+
+// compare_finite: the Pair with two pixels appended, one with a NaN in the image and one with an Inf in
+// the reference. Every figure equals the plain metric of the finite pixels, and the counts say what went.
+TEST(Metrics, CompareFiniteLeavesOutAndCountsInfAndNan) {
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    Pair p;
+    Image a(4, 1), b(4, 1, Color3(1.0f));
+    a(0, 0) = p.a(0, 0);
+    a(1, 0) = p.a(1, 0);
+    a(2, 0) = {5, nan, 5}; // one bad channel removes the whole pixel
+    a(3, 0) = {7, 7, 7};
+    b(3, 0) = {1, -inf, 1};
+    EXPECT_EQ(count_nonfinite_pixels(a), 1u);
+    EXPECT_EQ(count_nonfinite_pixels(b), 1u);
+    EXPECT_TRUE(std::isnan(channel_means(a).channel[1])); // the plain metrics still report them
+
+    const FiniteComparison d = compare_finite(a, b);
+    EXPECT_EQ(d.nonfinite, 1u);
+    EXPECT_EQ(d.reference_nonfinite, 1u);
+    EXPECT_EQ(d.compared, 2u); // pixels 0 and 1
+    Image a3(3, 1);            // a's finite pixels
+    a3(0, 0) = a(0, 0);
+    a3(1, 0) = a(1, 0);
+    a3(2, 0) = a(3, 0);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_DOUBLE_EQ(d.mean.channel[c], channel_means(a3).channel[c]);
+        EXPECT_DOUBLE_EQ(d.reference_mean.channel[c], 1.0);
+        EXPECT_DOUBLE_EQ(d.relative_mean_difference.channel[c], channel_means(a3).channel[c] - 1.0);
+        ASSERT_TRUE(d.rmse && d.rel_mse && d.mean_relative_error);
+        EXPECT_DOUBLE_EQ(d.rmse->channel[c], rmse(p.a, p.b).channel[c]);
+        EXPECT_DOUBLE_EQ(d.rel_mse->channel[c], rel_mse(p.a, p.b).channel[c]);
+        EXPECT_DOUBLE_EQ(d.mean_relative_error->channel[c], mean_relative_error(p.a, p.b).channel[c]);
+    }
+    EXPECT_DOUBLE_EQ(d.rmse->overall, rmse(p.a, p.b).overall);
+
+    // Sizes differ: means only. All pixels non-finite: zeros, not NaN.
+    const FiniteComparison e = compare_finite(Image(2, 2, Color3(inf)), Image(1, 1, Color3(1.0f)));
+    EXPECT_EQ(e.nonfinite, 4u);
+    EXPECT_FALSE(e.rmse);
+    EXPECT_EQ(e.compared, 0u);
+    EXPECT_EQ(e.mean.overall, 0.0);
 }
 
 TEST(Metrics, DownsampleAveragesBlocks) {

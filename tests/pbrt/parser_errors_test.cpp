@@ -1,6 +1,9 @@
 // Malformed scenes: each must throw illum::Error naming file:line:column and saying what is wrong.
 #include <gtest/gtest.h>
 
+#include <cerrno>
+#include <cstring>
+
 #include "illum/scene/pbrt/parser.h"
 #include "test_util.h"
 
@@ -93,9 +96,15 @@ const Case kCases[] = {
     {"unknown Attribute target", "WorldBegin\nAttribute \"camera\" \"float x\" 1", "bad.pbrt:2:1",
      "unknown target \"camera\""},
     {"missing Include file", "WorldBegin\nInclude \"does-not-exist.pbrt\"", "bad.pbrt:2:9",
-     "cannot open included file \"does-not-exist.pbrt\""},
+     "cannot open included file \"does-not-exist.pbrt\" (/nowhere/does-not-exist.pbrt): No such file or "
+     "directory"},
     {"LightSource inside an object", "WorldBegin\nObjectBegin \"a\"\nLightSource \"point\"", "bad.pbrt:3:1",
      "lights cannot be instanced"},
+    // pbrt-v4 stops with this message too; the position is the end of the file.
+    {"empty file", "", "bad.pbrt:1:1", "End of files before WorldBegin"},
+    {"comments only", "# nothing here\n\n", "bad.pbrt:3:1", "End of files before WorldBegin"},
+    {"options without a world", "Camera \"perspective\"\nFilm \"rgb\" ", "bad.pbrt:2:12",
+     "End of files before WorldBegin"},
 };
 
 TEST(PbrtParserErrors, MalformedInputCorpus) {
@@ -143,12 +152,48 @@ TEST(PbrtParserErrors, IncludingADirectoryIsAnError) {
     test::TempDir dir("incdir");
     dir.write("sub/x.pbrt", "");
     expect_error([&] { parse_pbrt_string("Include \"sub\"", "main.pbrt", dir.path()); }, "main.pbrt:1:9",
-                 "cannot open included file");
+                 std::string("cannot open included file \"sub\" (") + dir.file("sub") +
+                     "): " + std::strerror(EISDIR));
+}
+
+// The world may begin in an included file, and an included fragment needs no WorldBegin of its own; but the
+// end of the main file is checked even when an included file ends first.
+TEST(PbrtParserErrors, WorldBeginMayComeFromAnIncludedFile) {
+    test::TempDir dir("worldinc");
+    dir.write("world.pbrt", "WorldBegin\n");
+    dir.write("shapes.pbrt", "Shape \"sphere\"\n");
+    dir.write("camera.pbrt", "Camera \"perspective\"\n");
+    SceneDesc s =
+        parse_pbrt_string("Include \"world.pbrt\"\nInclude \"shapes.pbrt\"\n", "main.pbrt", dir.path());
+    EXPECT_EQ(s.shapes.size(), 1u);
+    expect_error([&] { parse_pbrt_string("Include \"camera.pbrt\"\n", "main.pbrt", dir.path()); },
+                 "main.pbrt:2:1", "End of files before WorldBegin");
+}
+
+// --strict: the first of the parser's warnings is an error at its position; without it, a warning.
+TEST(PbrtParserErrors, StrictTurnsParserWarningsIntoErrors) {
+    const char* cases[][3] = {
+        {"Camera \"perspective\"\n  MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\nWorldBegin\n",
+         "bad.pbrt:2:3", "participating media are not supported"},
+        {"ActiveTransform EndTime\nTranslate 1 0 0\nWorldBegin\n", "bad.pbrt:1:1", "motion blur"},
+        {"WorldBegin\nTransformBegin\nTransformEnd\n", "bad.pbrt:2:1", "TransformBegin/TransformEnd"},
+        {"WorldBegin\nWorldEnd\n", "bad.pbrt:2:1", "WorldEnd"},
+    };
+    ParseOptions strict;
+    strict.strict = true;
+    for (auto& c : cases) {
+        SCOPED_TRACE(c[0]);
+        SceneDesc s = parse_pbrt_string(c[0], "bad.pbrt", "/nowhere");
+        ASSERT_EQ(s.warnings.size(), 1u);
+        EXPECT_NE(s.warnings[0].find(std::string(c[1]) + ": " + c[2]), std::string::npos) << s.warnings[0];
+        expect_error([&] { parse_pbrt_string(c[0], "bad.pbrt", "/nowhere", strict); }, c[1],
+                     std::string(c[2]));
+    }
 }
 
 TEST(PbrtParserErrors, MissingTopLevelFile) {
     expect_error([] { parse_pbrt_file("/nonexistent/scene.pbrt"); }, "/nonexistent/scene.pbrt",
-                 "cannot open scene file");
+                 std::string("cannot open scene file: ") + std::strerror(ENOENT));
 }
 
 } // namespace

@@ -388,8 +388,10 @@ TEST(PbrtParser, MediaAndMotionGiveWarnings) {
     EXPECT_NE(s.warnings[1].find("motion blur"), std::string::npos);
 }
 
-TEST(PbrtParser, EmptyAndCommentOnlyInput) {
-    SceneDesc s = parse("# nothing here\n\n");
+// A scene of nothing but its world (no options, no shapes) is valid: every option has its default.
+// (Empty input is an error, as in pbrt-v4: see parser_errors_test.cpp.)
+TEST(PbrtParser, CommentsAndAnEmptyWorld) {
+    SceneDesc s = parse("# nothing here\n\nWorldBegin\n");
     EXPECT_TRUE(s.shapes.empty());
     EXPECT_EQ(s.camera.type, "");
 }

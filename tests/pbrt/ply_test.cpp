@@ -1,12 +1,14 @@
 // PLY reader: the three encodings read back identically, gzip, odd layouts, errors, and the coffee meshes.
-#include "illum/scene/pbrt/ply.h"
+#include "illum/geometry/ply.h"
 
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include "test_util.h"
@@ -245,7 +247,18 @@ TEST(Ply, Errors) {
                                             "vertex_indices\nend_header\n0 0\n");
     expect_error([&] { read_ply(no_z); }, no_z, "lacks x, y or z");
 
-    expect_error([&] { read_ply(dir.file("missing.ply")); }, dir.file("missing.ply"), "cannot open PLY file");
+    // The operating system's reason is part of the message.
+    expect_error([&] { read_ply(dir.file("missing.ply")); }, dir.file("missing.ply"),
+                 std::string("cannot open PLY file: ") + std::strerror(ENOENT));
+    std::filesystem::create_directories(dir.file("adir.ply"));
+    expect_error([&] { read_ply(dir.file("adir.ply")); }, dir.file("adir.ply"),
+                 std::string("cannot open PLY file: ") + std::strerror(EISDIR));
+    std::string locked = dir.write("locked.ply", "ply\n");
+    std::filesystem::permissions(locked, std::filesystem::perms::none);
+    if (::geteuid() != 0) { // root reads it anyway
+        expect_error([&] { read_ply(locked); }, locked,
+                     std::string("cannot open PLY file: ") + std::strerror(EACCES));
+    }
 
     std::string huge =
         dir.write("huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\n"

@@ -3,8 +3,8 @@
 
 #include <filesystem>
 
+#include "illum/geometry/ply.h"
 #include "illum/scene/pbrt/parser.h"
-#include "illum/scene/pbrt/ply.h"
 #include "test_util.h"
 
 namespace illum {
@@ -32,7 +32,11 @@ TEST(PbrtScenes, AllSharedScenesParse) {
         EXPECT_EQ(s.camera.type, "perspective");
         EXPECT_FALSE(s.shapes.empty());
         EXPECT_GE(s.area_lights.size(), 1u);
-        EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+        // Participating media are issue 11's: until then a scene with media gets exactly that warning.
+        for (const std::string& w : s.warnings)
+            EXPECT_TRUE(!s.media.empty() &&
+                        w.find("participating media are not supported") != std::string::npos)
+                << w;
         for (auto& sh : s.shapes) {
             if (!sh.material.name.empty()) {
                 EXPECT_TRUE(s.named_materials.count(sh.material.name));

@@ -6,7 +6,7 @@
 
 #include <fmt/core.h>
 
-#include "illum/analysis/albedo.h"
+#include "illum/bsdf/albedo.h"
 #include "illum/analysis/stats.h"
 #include "illum/analysis/weighted_histogram_test.h"
 #include "illum/bsdf/common.h"

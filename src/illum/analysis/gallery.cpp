@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "illum/analysis/albedo.h"
+#include "illum/bsdf/albedo.h"
 #include "illum/bsdf/registry.h"
 #include "illum/bsdf/shared_bxdf_material.h"
 #include "illum/geometry/sphere.h"

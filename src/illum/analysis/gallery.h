@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "illum/scene/scene.h"
+#include "illum/render/scene.h"
 
 namespace illum {
 

@@ -2,7 +2,9 @@
 
 #include "illum/bsdf/glossy_diffuse_sampling.h"
 
+#include <cerrno>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
 
 #include "illum/math/warp.h"
@@ -57,8 +59,15 @@ Color3 MerlTable::lookup(Vector3f wo, Vector3f wi) const {
 }
 
 MerlTable MerlTable::read(const std::string& path) {
+    errno = 0;
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot open MERL file '" + path + "'");
+    if (!in) {
+        // The standard does not promise errno from a stream, but the C library under it sets it; say
+        // the reason when there is one.
+        int err = errno;
+        throw Error("cannot open MERL file '" + path + "'" +
+                    (err ? std::string(": ") + std::strerror(err) : ""));
+    }
     std::int32_t dims[3];
     if (!in.read(reinterpret_cast<char*>(dims), sizeof dims))
         throw Error("MERL file '" + path + "' is truncated: it ends inside the 12-byte header");

@@ -22,6 +22,8 @@
 #include "illum/bsdf/toon.h"
 #include "illum/bsdf/torrance_sparrow.h"
 #include "illum/bsdf/ward.h"
+#include "illum/param/spectrum_param.h"
+#include "illum/texture/texture_params.h"
 #include "illum/util/error.h"
 
 namespace illum {
@@ -117,13 +119,14 @@ ParamSpec distribution_choice() {
 
 template <class P>
 FresnelMode fresnel_mode(const P& p) {
-    return p.str("fresnel") == "schlick" ? FresnelMode::Schlick : FresnelMode::Exact;
+    return p.str("fresnel"_p) == "schlick" ? FresnelMode::Schlick : FresnelMode::Exact;
 }
 template <class P>
 MicrofacetDistribution distribution(const P& p) {
-    float a = p.scalar("alpha");
-    float ax = p.has("alpha_x") ? p.scalar("alpha_x") : a, ay = p.has("alpha_y") ? p.scalar("alpha_y") : a;
-    return {p.str("distribution") == "beckmann" ? MicrofacetType::Beckmann : MicrofacetType::GGX, ax, ay};
+    float a = p.scalar("alpha"_p);
+    float ax = p.has("alpha_x"_p) ? p.scalar("alpha_x"_p) : a,
+          ay = p.has("alpha_y"_p) ? p.scalar("alpha_y"_p) : a;
+    return {p.str("distribution"_p) == "beckmann" ? MicrofacetType::Beckmann : MicrofacetType::GGX, ax, ay};
 }
 std::vector<ParamSpec> alpha_params(double def) {
     return {scalar("alpha", def, 1e-3, 2, "roughness α (GGX/Beckmann width; ≈ rms slope)"),
@@ -149,12 +152,12 @@ std::vector<ParamSpec> layer_params(std::vector<ParamSpec> base) {
 }
 template <class P>
 DielectricInterface coat_interface(const P& p) {
-    float a = p.scalar("roughness");
-    return DielectricInterface(p.scalar("eta"), Vector2f(a, a));
+    float a = p.scalar("roughness"_p);
+    return DielectricInterface(p.scalar("eta"_p), Vector2f(a, a));
 }
 template <class P>
 LayerMedium layer_medium(const P& p) {
-    return {p.scalar("thickness"), p.rgb("albedo"), p.scalar("g")};
+    return {p.scalar("thickness"_p), p.rgb("albedo"_p), p.scalar("g"_p)};
 }
 
 // A MERL table tabulated from a GGX gold rough conductor; `synthetic:ALPHA` in place of a file name.
@@ -188,8 +191,8 @@ struct ArenaMaker {
 };
 template <class F>
 ModelFactory factory(F f) {
-    return {[f](const ParamValues& p) { return f(p, HeapMaker{}); },
-            [f](const ShadingArgs& p, ScratchArena& arena) { return f(p, ArenaMaker{arena}); }};
+    return {[f](const ModelArgs& p) { return f(p, HeapMaker{}); },
+            [f](const ModelArgs& p, ScratchArena& arena) { return f(p, ArenaMaker{arena}); }};
 }
 template <class F>
 ModelFactory heap_only(F f) {
@@ -210,7 +213,7 @@ std::vector<ModelSpec> build_models() {
          false,
          "",
          factory([](const auto& p, const auto& m) {
-             return m.template make<LambertBxDF>(p.rgb("reflectance"));
+             return m.template make<LambertBxDF>(p.rgb("reflectance"_p));
          })});
     m.push_back({"oren-nayar",
                  "rough diffuse reflection (Oren & Nayar 1994, qualitative model)",
@@ -224,7 +227,7 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<OrenNayarBxDF>(p.rgb("reflectance"), p.scalar("sigma"));
+                     return m.template make<OrenNayarBxDF>(p.rgb("reflectance"_p), p.scalar("sigma"_p));
                  })});
     m.push_back({"mirror",
                  "perfect specular reflection",
@@ -235,7 +238,7 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<MirrorBxDF>(p.rgb("reflectance"));
+                     return m.template make<MirrorBxDF>(p.rgb("reflectance"_p));
                  })});
     m.push_back({"dielectric",
                  "smooth dielectric interface (glass): Fresnel reflection and refraction",
@@ -249,7 +252,7 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "eta",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<DielectricBxDF>(p.scalar("eta"), fresnel_mode(p));
+                     return m.template make<DielectricBxDF>(p.scalar("eta"_p), fresnel_mode(p));
                  })});
     m.push_back({"thin-dielectric",
                  "thin dielectric pane: reflection and straight transmission with inter-reflection",
@@ -260,7 +263,7 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<ThinDielectricBxDF>(p.scalar("eta"), fresnel_mode(p));
+                     return m.template make<ThinDielectricBxDF>(p.scalar("eta"_p), fresnel_mode(p));
                  })});
     m.push_back(
         {"conductor",
@@ -273,7 +276,7 @@ std::vector<ModelSpec> build_models() {
          false,
          "",
          factory([](const auto& p, const auto& m) {
-             return m.template make<ConductorBxDF>(p.rgb("eta"), p.rgb("k"), fresnel_mode(p));
+             return m.template make<ConductorBxDF>(p.rgb("eta"_p), p.rgb("k"_p), fresnel_mode(p));
          })});
     m.push_back({"phong",
                  "energy-normalised modified Phong (Lafortune & Willems 1994)",
@@ -288,7 +291,7 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<PhongBxDF>(p.rgb("kd"), p.rgb("ks"), p.scalar("exponent"));
+                     return m.template make<PhongBxDF>(p.rgb("kd"_p), p.rgb("ks"_p), p.scalar("exponent"_p));
                  })});
     m.push_back({"blinn-phong",
                  "Blinn-Phong with Ashikhmin-Shirley normalisation",
@@ -303,7 +306,8 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<BlinnPhongBxDF>(p.rgb("kd"), p.rgb("ks"), p.scalar("exponent"));
+                     return m.template make<BlinnPhongBxDF>(p.rgb("kd"_p), p.rgb("ks"_p),
+                                                            p.scalar("exponent"_p));
                  })});
     m.push_back(
         {"torrance-sparrow",
@@ -320,8 +324,9 @@ std::vector<ModelSpec> build_models() {
          false,
          "",
          factory([](const auto& p, const auto& m) {
-             return m.template make<TorranceSparrowBxDF>(p.rgb("kd"), p.rgb("ks"), p.scalar("sigma"),
-                                                         Fresnel{p.rgb("eta"), p.rgb("k"), fresnel_mode(p)});
+             return m.template make<TorranceSparrowBxDF>(
+                 p.rgb("kd"_p), p.rgb("ks"_p), p.scalar("sigma"_p),
+                 Fresnel{p.rgb("eta"_p), p.rgb("k"_p), fresnel_mode(p)});
          })});
     m.push_back(
         {"cook-torrance",
@@ -338,8 +343,8 @@ std::vector<ModelSpec> build_models() {
          false,
          "",
          factory([](const auto& p, const auto& m) {
-             return m.template make<CookTorranceBxDF>(p.rgb("kd"), p.rgb("ks"), p.scalar("m"),
-                                                      Fresnel{p.rgb("eta"), p.rgb("k"), fresnel_mode(p)});
+             return m.template make<CookTorranceBxDF>(p.rgb("kd"_p), p.rgb("ks"_p), p.scalar("m"_p),
+                                                      Fresnel{p.rgb("eta"_p), p.rgb("k"_p), fresnel_mode(p)});
          })});
     {
         auto params = alpha_params(0.3);
@@ -361,7 +366,7 @@ std::vector<ModelSpec> build_models() {
                      "",
                      factory([](const auto& p, const auto& m) {
                          return m.template make<RoughConductorBxDF>(
-                             distribution(p), Fresnel{p.rgb("eta"), p.rgb("k"), fresnel_mode(p)});
+                             distribution(p), Fresnel{p.rgb("eta"_p), p.rgb("k"_p), fresnel_mode(p)});
                      })});
     }
     {
@@ -382,7 +387,7 @@ std::vector<ModelSpec> build_models() {
                      false,
                      "eta",
                      factory([](const auto& p, const auto& m) {
-                         return m.template make<RoughDielectricBxDF>(distribution(p), p.scalar("eta"),
+                         return m.template make<RoughDielectricBxDF>(distribution(p), p.scalar("eta"_p),
                                                                      fresnel_mode(p));
                      })});
     }
@@ -401,10 +406,10 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     float a = p.scalar("alpha");
-                     return m.template make<WardBxDF>(p.rgb("rho_d"), p.rgb("rho_s"),
-                                                      p.has("alpha_x") ? p.scalar("alpha_x") : a,
-                                                      p.has("alpha_y") ? p.scalar("alpha_y") : a);
+                     float a = p.scalar("alpha"_p);
+                     return m.template make<WardBxDF>(p.rgb("rho_d"_p), p.rgb("rho_s"_p),
+                                                      p.has("alpha_x"_p) ? p.scalar("alpha_x"_p) : a,
+                                                      p.has("alpha_y"_p) ? p.scalar("alpha_y"_p) : a);
                  })});
     m.push_back({"coated-diffuse",
                  "Lambertian base under a dielectric coat, smooth or rough, with an optional medium between "
@@ -424,8 +429,8 @@ std::vector<ModelSpec> build_models() {
                  "",
                  factory([](const auto& p, const auto& m) {
                      return m.template make<CoatedDiffuseBxDF>(
-                         coat_interface(p), LambertBxDF(p.rgb("reflectance")), layer_medium(p),
-                         p.integer("max_depth"), p.integer("samples"), "coated-diffuse");
+                         coat_interface(p), LambertBxDF(p.rgb("reflectance"_p)), layer_medium(p),
+                         p.integer("max_depth"_p), p.integer("samples"_p), "coated-diffuse");
                  })});
     {
         std::vector<ParamSpec> params = alpha_params(0.2);
@@ -447,10 +452,10 @@ std::vector<ModelSpec> build_models() {
              "",
              factory([](const auto& p, const auto& m) {
                  RoughConductorBxDF base(distribution(p),
-                                         Fresnel{p.rgb("conductor_eta"), p.rgb("conductor_k")});
+                                         Fresnel{p.rgb("conductor_eta"_p), p.rgb("conductor_k"_p)});
                  return m.template make<CoatedConductorBxDF>(coat_interface(p), ConductorInterface(base),
-                                                             layer_medium(p), p.integer("max_depth"),
-                                                             p.integer("samples"), "coated-conductor");
+                                                             layer_medium(p), p.integer("max_depth"_p),
+                                                             p.integer("samples"_p), "coated-conductor");
              })});
     }
     m.push_back({"diffuse-transmission",
@@ -464,8 +469,8 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<DiffuseTransmissionBxDF>(p.rgb("reflectance"),
-                                                                     p.rgb("transmittance"));
+                     return m.template make<DiffuseTransmissionBxDF>(p.rgb("reflectance"_p),
+                                                                     p.rgb("transmittance"_p));
                  })});
     m.push_back({"merl",
                  "measured isotropic BRDF from a MERL .binary table",
@@ -481,10 +486,10 @@ std::vector<ModelSpec> build_models() {
                  false,
                  false,
                  "",
-                 heap_only([](const ParamValues& p) -> std::unique_ptr<BxDF> {
-                     if (!p.has("file"))
+                 heap_only([](const ModelArgs& p) -> std::unique_ptr<BxDF> {
+                     if (!p.has("file"_p))
                          throw Error("merl: parameter 'file' is required (a MERL .binary file)");
-                     const std::string& f = p.str("file");
+                     const std::string& f = p.str("file"_p);
                      if (f.rfind("synthetic:", 0) == 0) {
                          double a;
                          if (!parse_double(f.substr(10), &a) || !(a >= 1e-3 && a <= 2))
@@ -506,9 +511,20 @@ std::vector<ModelSpec> build_models() {
          false,
          "",
          factory([](const auto& p, const auto& m) {
-             return m.template make<ToonBxDF>(p.rgb("reflectance"), p.rgb("ks"), p.integer("bands"),
-                                              p.scalar("highlight"));
+             return m.template make<ToonBxDF>(p.rgb("reflectance"_p), p.rgb("ks"_p), p.integer("bands"_p),
+                                              p.scalar("highlight"_p));
          })});
+    // Closed-form albedos at normal incidence: ρ for Lambert, R for the mirror, R + T for the sheet.
+    for (ModelSpec& spec : m) {
+        if (spec.name == "lambert")
+            spec.normal_albedo = [](const ModelArgs& p) { return p.rgb("reflectance"_p); };
+        else if (spec.name == "mirror")
+            spec.normal_albedo = [](const ModelArgs& p) { return p.rgb("reflectance"_p); };
+        else if (spec.name == "diffuse-transmission")
+            spec.normal_albedo = [](const ModelArgs& p) {
+                return p.rgb("reflectance"_p) + p.rgb("transmittance"_p);
+            };
+    }
     // Energy conservation ties these parameters together (each model's constructor checks it).
     for (ModelSpec& spec : m) {
         if (spec.name == "phong" || spec.name == "blinn-phong" || spec.name == "torrance-sparrow" ||
@@ -524,26 +540,35 @@ std::vector<ModelSpec> build_models() {
 
 } // namespace
 
-float ParamValues::scalar(const std::string& name) const {
-    double v = 0;
-    parse_double(str(name), &v);
-    return float(v);
-}
-Color3 ParamValues::rgb(const std::string& name) const {
-    auto parts = split(str(name), ',');
-    double v[3] = {0, 0, 0};
-    for (int i = 0; i < 3; ++i) parse_double(parts[parts.size() == 3 ? i : 0], &v[i]);
-    return {float(v[0]), float(v[1]), float(v[2])};
-}
-int ParamValues::integer(const std::string& name) const { return int(scalar(name)); }
-const std::string& ParamValues::str(const std::string& name) const {
-    auto it = values_.find(name);
-    if (it == values_.end()) throw Error("parameter '" + name + "' is not set");
-    return it->second;
+std::string ParamValues::describe() const {
+    std::string out;
+    for (const ModelArg& a : args) {
+        std::string v;
+        if (a.color || a.scalar)
+            v = "(texture)";
+        else if (a.kind == ParamKind::Choice || a.kind == ParamKind::Path)
+            v = a.text;
+        else if (a.kind == ParamKind::Rgb && !(a.constant.r == a.constant.g && a.constant.g == a.constant.b))
+            v = fmt_num(a.constant.r) + "," + fmt_num(a.constant.g) + "," + fmt_num(a.constant.b);
+        else
+            v = fmt_num(a.constant.r);
+        out += (out.empty() ? "" : " ") + a.name + "=" + v;
+    }
+    return out;
 }
 
 const std::vector<ModelSpec>& bxdf_models() {
-    static const std::vector<ModelSpec> models = build_models();
+    static const std::vector<ModelSpec> models = [] {
+        std::vector<ModelSpec> m = build_models();
+        // Parameters are looked up by their names' hashes: no two of one model may share one.
+        for (const ModelSpec& spec : m)
+            for (std::size_t i = 0; i < spec.params.size(); ++i)
+                for (std::size_t j = 0; j < i; ++j)
+                    if (ParamId::of(spec.params[i].name) == ParamId::of(spec.params[j].name))
+                        throw Error("model '" + spec.name + "': parameters '" + spec.params[i].name +
+                                    "' and '" + spec.params[j].name + "' share a hash");
+        return m;
+    }();
     return models;
 }
 
@@ -555,60 +580,171 @@ const ModelSpec& find_bxdf_model(const std::string& name) {
     throw Error("unknown BRDF model '" + name + "' (known: " + known + ")");
 }
 
-ParamValues resolve_params(const ModelSpec& model, const std::map<std::string, std::string>& params) {
-    ParamValues out;
+ParamSet params_from_text(const ModelSpec& model, const std::map<std::string, std::string>& params) {
+    ParamSet out;
     for (const auto& [name, value] : params) {
+        Param p;
+        p.name = name;
+        p.loc = {};
         const ParamSpec* spec = nullptr;
-        for (const auto& p : model.params)
-            if (p.name == name) spec = &p;
-        if (!spec) {
-            std::string names;
-            for (const auto& p : model.params) names += (names.empty() ? "" : ", ") + p.name;
-            throw Error("model '" + model.name + "' has no parameter '" + name +
-                        "' (parameters: " + (names.empty() ? "none" : names) + ")");
+        for (const auto& ps : model.params)
+            if (ps.name == name) spec = &ps;
+        if (spec && (spec->kind == ParamKind::Scalar || spec->kind == ParamKind::Integer ||
+                     spec->kind == ParamKind::Rgb)) {
+            p.numbers = parse_numbers(model.name, *spec, value);
+            p.type = p.numbers.size() == 3 ? ParamType::RGB : ParamType::Float;
+            if (p.type == ParamType::Float && spec->kind == ParamKind::Rgb && p.numbers.size() == 1)
+                p.type = ParamType::Float; // a grey value
+        } else {
+            p.type = ParamType::String; // a choice or a path; an unknown name is reported by resolve_params
+            p.strings = {value};
         }
-        switch (spec->kind) {
-        case ParamKind::Scalar:
-        case ParamKind::Integer:
-        case ParamKind::Rgb: {
-            auto v = parse_numbers(model.name, *spec, value);
-            if (spec->kind != ParamKind::Rgb && v.size() != 1)
-                throw Error("parameter '" + name + "' of '" + model.name + "' takes one number, got '" +
-                            value + "'");
-            if (spec->kind == ParamKind::Rgb && v.size() != 1 && v.size() != 3)
-                throw Error("parameter '" + name + "' of '" + model.name +
-                            "' takes one value or r,g,b, got '" + value + "'");
-            if (spec->kind == ParamKind::Integer && v[0] != std::floor(v[0]))
-                throw Error("parameter '" + name + "' of '" + model.name + "' must be an integer, got '" +
-                            value + "'");
-            for (double x : v)
-                if (!(x >= spec->min && x <= spec->max))
-                    throw Error("parameter '" + name + "' of '" + model.name + "' must be in [" +
-                                fmt_num(spec->min) + ", " + fmt_num(spec->max) + "], got " + value);
-            break;
-        }
-        case ParamKind::Choice: {
-            bool ok = false;
-            std::string list;
-            for (const auto& c : spec->choices) {
-                ok = ok || c == value;
-                list += (list.empty() ? "" : ", ") + c;
-            }
-            if (!ok)
-                throw Error("parameter '" + name + "' of '" + model.name + "' must be one of " + list +
-                            ", got '" + value + "'");
-            break;
-        }
-        case ParamKind::Path:
-            if (value.empty())
-                throw Error("parameter '" + name + "' of '" + model.name + "' is an empty path");
-            break;
-        }
-        out.set(name, value);
+        out.add(std::move(p));
     }
-    for (const auto& p : model.params)
-        if (!out.has(p.name) && !p.default_value.empty()) out.set(p.name, p.default_value);
     return out;
+}
+
+namespace {
+
+[[noreturn]] void param_error(const Param& p, const std::string& model, const std::string& what) {
+    throw Error(p.loc, "parameter '" + p.name + "' of '" + model + "' " + what);
+}
+
+// The text form of a value, for reports.
+std::string value_text(const Param& p) {
+    if (!p.strings.empty()) return p.strings[0];
+    std::string out;
+    for (double v : p.numbers) {
+        if (!out.empty()) out += ',';
+        out += fmt_num(v);
+    }
+    return out;
+}
+
+} // namespace
+
+namespace {
+
+// A spec's default as the parameter a scene file would write.
+Param default_param(const ModelSpec& model, const ParamSpec& spec) {
+    Param def;
+    def.name = spec.name;
+    if (spec.kind == ParamKind::Choice || spec.kind == ParamKind::Path) {
+        def.type = ParamType::String;
+        def.strings = {spec.default_value};
+    } else {
+        def.numbers = parse_numbers(model.name, spec, spec.default_value);
+        def.type = def.numbers.size() == 3 ? ParamType::RGB : ParamType::Float;
+    }
+    return def;
+}
+
+// One given (or default) parameter checked against its spec.
+ModelArg model_arg(const ModelSpec& model, const ParamSpec& spec, const Param& p, const ParamSet& params,
+                   TextureParams* textures, bool clamp = false) {
+    ModelArg a;
+    a.name = spec.name;
+    a.id = ParamId::of(spec.name);
+    a.kind = spec.kind;
+    a.lo = float(spec.min);
+    a.hi = float(spec.max);
+    for (std::size_t g = 0; g < model.unit_sums.size(); ++g)
+        for (const std::string& name : model.unit_sums[g])
+            if (name == spec.name) a.unit_sum_group = int(g);
+    p.used = true;
+    switch (spec.kind) {
+    case ParamKind::Scalar:
+    case ParamKind::Integer:
+    case ParamKind::Rgb: {
+        if (p.type == ParamType::Texture) {
+            if (!textures || spec.kind == ParamKind::Integer)
+                param_error(p, model.name, "cannot be a texture");
+            if (spec.kind == ParamKind::Rgb)
+                a.color = textures->color(params, spec.name, std::nullopt);
+            else
+                a.scalar = textures->scalar(params, spec.name, std::nullopt);
+            // The heap-built model (the albedo pass's estimate) sees a textured parameter at its default.
+            if (!spec.default_value.empty())
+                a.constant = model_arg(model, spec, default_param(model, spec), params, nullptr).constant;
+            return a;
+        }
+        std::vector<double> v;
+        if (p.type == ParamType::Spectrum && spec.kind == ParamKind::Rgb) {
+            Color3 c = spectrum_param_rgb(p, SpectrumKind::Unbounded);
+            v = {c.r, c.g, c.b};
+        } else if (p.type == ParamType::Float || p.type == ParamType::Integer ||
+                   (p.type == ParamType::RGB && spec.kind == ParamKind::Rgb)) {
+            v = p.numbers;
+        } else {
+            param_error(p, model.name, std::string("cannot be of type ") + to_string(p.type));
+        }
+        if (spec.kind != ParamKind::Rgb && v.size() != 1)
+            param_error(p, model.name, "takes one number, got '" + value_text(p) + "'");
+        if (spec.kind == ParamKind::Rgb && v.size() != 1 && v.size() != 3)
+            param_error(p, model.name, "takes one value or r,g,b, got '" + value_text(p) + "'");
+        if (spec.kind == ParamKind::Integer && v[0] != std::floor(v[0]))
+            param_error(p, model.name, "must be an integer, got '" + value_text(p) + "'");
+        for (double& x : v)
+            if (clamp && std::isfinite(x)) x = std::clamp(x, spec.min, spec.max);
+        for (double x : v)
+            if (!(x >= spec.min && x <= spec.max))
+                param_error(p, model.name,
+                            "must be in [" + fmt_num(spec.min) + ", " + fmt_num(spec.max) + "], got " +
+                                value_text(p));
+        a.constant = v.size() == 3 ? Color3(float(v[0]), float(v[1]), float(v[2])) : Color3(float(v[0]));
+        return a;
+    }
+    case ParamKind::Choice: {
+        if (p.type != ParamType::String || p.strings.size() != 1)
+            param_error(p, model.name, "takes one string");
+        bool ok = false;
+        std::string list;
+        for (const auto& c : spec.choices) {
+            ok = ok || c == p.strings[0];
+            list += (list.empty() ? "" : ", ") + c;
+        }
+        if (!ok) param_error(p, model.name, "must be one of " + list + ", got '" + p.strings[0] + "'");
+        a.text = p.strings[0];
+        return a;
+    }
+    case ParamKind::Path:
+        if (p.type != ParamType::String || p.strings.size() != 1)
+            param_error(p, model.name, "takes one string");
+        if (p.strings[0].empty()) param_error(p, model.name, "is an empty path");
+        a.text = p.strings[0];
+        return a;
+    }
+    return a;
+}
+
+} // namespace
+
+ParamValues resolve_params(const ModelSpec& model, const ParamSet& params, TextureParams* textures,
+                           bool pbrt_alias) {
+    bool clamp = pbrt_alias;
+    for (const Param& p : params.params()) {
+        if (p.name == "type" || pbrt_alias) continue; // "type": MakeNamedMaterial's own
+        bool known = false;
+        for (const auto& ps : model.params) known = known || ps.name == p.name;
+        if (!known) {
+            std::string names;
+            for (const auto& ps : model.params) names += (names.empty() ? "" : ", ") + ps.name;
+            throw Error(p.loc, "model '" + model.name + "' has no parameter '" + p.name +
+                                   "' (parameters: " + (names.empty() ? "none" : names) + ")");
+        }
+    }
+    ParamValues out;
+    for (const ParamSpec& spec : model.params) {
+        if (const Param* p = params.find(spec.name))
+            out.args.push_back(model_arg(model, spec, *p, params, textures, clamp));
+        else if (!spec.default_value.empty())
+            out.args.push_back(model_arg(model, spec, default_param(model, spec), params, nullptr));
+    }
+    return out;
+}
+
+ParamValues resolve_params(const ModelSpec& model, const std::map<std::string, std::string>& params) {
+    return resolve_params(model, params_from_text(model, params), nullptr);
 }
 
 std::unique_ptr<BxDF> make_bxdf(const std::string& model, const std::map<std::string, std::string>& params) {
@@ -617,39 +753,46 @@ std::unique_ptr<BxDF> make_bxdf(const std::string& model, const std::map<std::st
 }
 
 float model_eta(const ModelSpec& model, const ParamValues& values) {
-    return model.eta_param.empty() ? 1.0f : values.scalar(model.eta_param);
+    if (model.eta_param.empty()) return 1.0f;
+    return ModelArgs(values.args, nullptr).scalar(ParamId{ParamId::of(model.eta_param)});
 }
 
-const ShadingArgs::Value& ShadingArgs::get(const std::string& name) const {
-    const Value* v = find(name);
-    if (!v) throw Error("model parameter '" + name + "' is missing"); // a registry bug, not user input
-    return *v;
+const ModelArg& ModelArgs::get(ParamId id) const {
+    // Every name a model's constructor reads is in its spec (the audit builds each model): a miss is a
+    // registry bug, never user input, and reads as zero rather than throwing in the middle of a render.
+    static const ModelArg none{};
+    const ModelArg* v = find(id);
+    if (!v) misses_.fetch_add(1, std::memory_order_relaxed);
+    return v ? *v : none;
 }
 
-float ShadingArgs::scalar(const std::string& name) const {
-    const Value& v = get(name);
-    float x = v.scalar ? v.scalar->evaluate(hit_) : v.constant.r;
+std::atomic<int> ModelArgs::misses_{0};
+
+float ModelArgs::scalar(ParamId id) const {
+    const ModelArg& v = get(id);
+    float x = v.scalar && at_ ? v.scalar->evaluate(*at_) : v.constant.r;
     return std::clamp(std::isfinite(x) ? x : v.lo, v.lo, v.hi);
 }
 
-Color3 ShadingArgs::raw_rgb(const Value& v) const {
-    Color3 c = v.color ? v.color->evaluate(hit_) : v.constant;
+Color3 ModelArgs::raw_rgb(const ModelArg& v) const {
+    Color3 c = v.color && at_ ? v.color->evaluate(*at_) : v.constant;
     for (int i = 0; i < 3; ++i) c[i] = std::clamp(std::isfinite(c[i]) ? c[i] : v.lo, v.lo, v.hi);
     return c;
 }
 
-Color3 ShadingArgs::rgb(const std::string& name) const {
-    const Value& v = get(name);
+Color3 ModelArgs::rgb(ParamId id) const {
+    const ModelArg& v = get(id);
     Color3 c = raw_rgb(v);
-    if (v.unit_sum_group < 0) return c;
+    // Only textures can break a unit sum at a shading point; constants were checked by the constructor.
+    if (v.unit_sum_group < 0 || !at_) return c;
     Color3 sum;
-    for (const Value& w : values_)
+    for (const ModelArg& w : args_)
         if (w.unit_sum_group == v.unit_sum_group) sum += raw_rgb(w);
+    // Scaled to a hair below 1 (one part in 10^6), so float rounding of the sum cannot exceed the
+    // constructor's bound of 1.
     for (int i = 0; i < 3; ++i)
-        if (sum[i] > 1) c[i] /= sum[i];
+        if (sum[i] > 1) c[i] *= (1 - 1e-6f) / sum[i];
     return c;
 }
-
-const std::string& ShadingArgs::str(const std::string& name) const { return get(name).text; }
 
 } // namespace illum

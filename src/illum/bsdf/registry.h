@@ -3,14 +3,17 @@
 // values (see each model's header); the registry only parses and validates strings.
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "illum/bsdf/bxdf.h"
-#include "illum/geometry/surface_hit.h"
+#include "illum/param/param_set.h"
 #include "illum/texture/texture.h"
 #include "illum/util/arena.h"
 
@@ -28,62 +31,76 @@ struct ParamSpec {
     std::vector<std::string> choices; // for Choice
 };
 
-// Parameter values after defaults, parsing and validation.
-class ParamValues {
-public:
-    bool has(const std::string& name) const { return values_.count(name) != 0; }
-    float scalar(const std::string& name) const;
-    Color3 rgb(const std::string& name) const;
-    int integer(const std::string& name) const;
-    const std::string& str(const std::string& name) const;
-    void set(const std::string& name, std::string value) { values_[name] = std::move(value); }
-    const std::map<std::string, std::string>& all() const { return values_; }
+// A parameter's name as the code names it: a hash computed at compile time ("kd"_p), so looking a
+// parameter up at a shading point compares integers, never strings. The registry checks at start-up that
+// no two parameters of a model share a hash.
+struct ParamId {
+    std::uint32_t hash = 0;
+    // FNV-1a, 32 bit.
+    static constexpr std::uint32_t of(std::string_view s) {
+        std::uint32_t h = 2166136261u;
+        for (char c : s) h = (h ^ std::uint8_t(c)) * 16777619u;
+        return h;
+    }
+};
+consteval ParamId operator""_p(const char* s, std::size_t n) { return {ParamId::of(std::string_view(s, n))}; }
 
-private:
-    std::map<std::string, std::string> values_;
+// One parameter of a model after validation: its constant value or the texture that gives it, the range
+// that shading clamps a textured value to, and the group of parameters whose sum must stay <= 1.
+struct ModelArg {
+    std::string name; // for reports only
+    std::uint32_t id = 0;
+    ParamKind kind = ParamKind::Scalar;
+    Color3 constant;                      // Scalar, Rgb, Integer (in .r); a textured one's default
+    std::string text;                     // Choice, Path
+    const ColorTexture* color = nullptr;  // a textured Rgb parameter
+    const FloatTexture* scalar = nullptr; // a textured Scalar parameter
+    float lo = 0, hi = 0;
+    int unit_sum_group = -1; // index into ModelSpec::unit_sums, -1 for none
 };
 
-// Parameter values at one shading point, for placing a model in the per-thread arena: constants, or
-// textures evaluated at the hit. Values are clamped to each parameter's range, so a texture cannot make a
-// model invalid in the middle of a render. Lookups compare names; nothing is allocated.
-class ShadingArgs {
-public:
-    struct Value {
-        std::string name;
-        ParamKind kind = ParamKind::Scalar;
-        Color3 constant;                      // Scalar, Rgb, Integer (in .r)
-        std::string text;                     // Choice, Path
-        const ColorTexture* color = nullptr;  // a textured Rgb parameter
-        const FloatTexture* scalar = nullptr; // a textured Scalar parameter
-        float lo = 0, hi = 0;
-        int unit_sum_group = -1; // index into ModelSpec::unit_sums, -1 for none
-    };
-    ShadingArgs(const std::vector<Value>& values, const SurfaceHit& hit) : values_(values), hit_(hit) {}
+// A model's validated parameters (defaults applied, in the order of the model's spec): what the tools,
+// the audits and scene materials build a model from. `describe()` gives "name=value ..." for reports.
+struct ParamValues {
+    std::vector<ModelArg> args;
+    std::string describe() const;
+};
 
-    bool has(const std::string& name) const { return find(name) != nullptr; }
-    float scalar(const std::string& name) const;
-    Color3 rgb(const std::string& name) const;
-    int integer(const std::string& name) const { return int(scalar(name)); }
-    const std::string& str(const std::string& name) const;
+// The values a model's constructor reads, at one shading point (textures evaluated there and clamped to
+// each parameter's range, unit-sum groups scaled down to 1) or, without a point, the constants as given
+// (the constructor rejects a broken unit sum). A lookup
+// is a scan of a few integers: nothing is allocated, thrown or compared as text.
+class ModelArgs {
+public:
+    ModelArgs(const std::vector<ModelArg>& args, const TextureEvalContext* at) : args_(args), at_(at) {}
+
+    bool has(ParamId id) const { return find(id) != nullptr; }
+    float scalar(ParamId id) const;
+    Color3 rgb(ParamId id) const;
+    int integer(ParamId id) const { return int(scalar(id)); }
+    const std::string& str(ParamId id) const { return get(id).text; }
+    // How many lookups named a parameter the model's spec does not have (a registry bug; tests assert 0).
+    static int misses() { return misses_.load(); }
 
 private:
-    const Value& get(const std::string& name) const;
-    Color3 raw_rgb(const Value& v) const; // evaluated and clamped to the parameter's range
-    const Value* find(const std::string& name) const {
-        for (const Value& v : values_)
-            if (v.name == name) return &v;
+    static std::atomic<int> misses_;
+    const ModelArg& get(ParamId id) const;
+    Color3 raw_rgb(const ModelArg& v) const; // evaluated and clamped to the parameter's range
+    const ModelArg* find(ParamId id) const {
+        for (const ModelArg& v : args_)
+            if (v.id == id.hash) return &v;
         return nullptr;
     }
-    const std::vector<Value>& values_;
-    const SurfaceHit& hit_;
+    const std::vector<ModelArg>& args_;
+    const TextureEvalContext* at_;
 };
 
-// A model's constructors: on the heap from validated values (tools, audits, constant materials), or in
-// the arena from a shading point's values (textured materials; null for a model that cannot be placed
-// there, such as the measured one with its shared table).
+// A model's constructors: on the heap (tools, audits, constant materials), or in the arena at a shading
+// point (textured materials; null for a model that cannot be placed there, such as the measured one with
+// its shared table).
 struct ModelFactory {
-    std::function<std::unique_ptr<BxDF>(const ParamValues&)> make;
-    std::function<const BxDF*(const ShadingArgs&, ScratchArena&)> place;
+    std::function<std::unique_ptr<BxDF>(const ModelArgs&)> make;
+    std::function<const BxDF*(const ModelArgs&, ScratchArena&)> place;
 };
 
 struct AuditCase {
@@ -104,14 +121,31 @@ struct ModelSpec {
     // Groups of Rgb parameters whose sum the model requires to be at most 1 (kd + ks, say). Where textures
     // break that at a shading point, the group is scaled down per channel to sum to 1.
     std::vector<std::vector<std::string>> unit_sums = {};
+    // The directional albedo at normal incidence in closed form, where the model has one (the albedo pass
+    // shows it at each hit of a textured material; otherwise it shows the estimate at the defaults).
+    std::function<Color3(const ModelArgs&)> normal_albedo = {};
 
-    std::unique_ptr<BxDF> make(const ParamValues& values) const { return factory.make(values); }
+    std::unique_ptr<BxDF> make(const ParamValues& values) const {
+        return factory.make(ModelArgs(values.args, nullptr));
+    }
 };
 
 const std::vector<ModelSpec>& bxdf_models();
 // Throws illum::Error naming the unknown model and listing the known ones.
 const ModelSpec& find_bxdf_model(const std::string& name);
-// Applies defaults and validates every value (unknown name, not a number, out of range, bad choice).
+// The one validation of a model's parameters, as a scene file gives them (typed, with positions): unknown
+// name (listing the model's parameters), wrong type or count, out of range, bad choice, empty path.
+// Texture-valued parameters are resolved through `textures` (an error when it is null or the parameter
+// cannot be textured); defaults are applied. Marks every parameter it reads used. Throws illum::Error at
+// the parameter's position.
+// With `pbrt_alias` (a pbrt-v4 material name standing for the model), out-of-range numbers are clamped
+// to the range (pbrt-v4 clamps reflectances where it uses them) and parameters the model does not know are
+// left unused, for the builder to report as pbrt-v4 parameters illum does not use.
+ParamValues resolve_params(const ModelSpec& model, const ParamSet& params,
+                           class TextureParams* textures = nullptr, bool pbrt_alias = false);
+// Parameters as text (`illum brdf ... name=value`, audit grids): numbers for scalar, integer and rgb
+// parameters ("0.5" or "r,g,b"), words for choices and paths; then validated as above.
+ParamSet params_from_text(const ModelSpec& model, const std::map<std::string, std::string>& params);
 ParamValues resolve_params(const ModelSpec& model, const std::map<std::string, std::string>& params);
 std::unique_ptr<BxDF> make_bxdf(const std::string& model, const std::map<std::string, std::string>& params);
 // The interior index used by reciprocity checks (1 when the model has none).

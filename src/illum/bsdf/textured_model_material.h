@@ -1,5 +1,7 @@
 // A reflection model of the registry whose parameters may be textures: at each hit the textures are
-// evaluated and the model is placed in the scratch arena (no heap allocation).
+// evaluated (clamped to each parameter's range, unit-sum groups scaled to 1, so every point gives a valid
+// model) and the model is placed in the scratch arena. No strings, maps, exceptions or heap per hit: the
+// parameters were resolved to slots when the scene was built.
 #pragma once
 
 #include <vector>
@@ -12,24 +14,21 @@ namespace illum {
 class TexturedModelMaterial final : public Material {
 public:
     // albedo: what the albedo pass shows (the model's albedo with its textures at their defaults).
-    TexturedModelMaterial(const ModelSpec& spec, std::vector<ShadingArgs::Value> values, Color3 albedo)
-        : spec_(spec), values_(std::move(values)), albedo_(albedo) {}
+    TexturedModelMaterial(const ModelSpec& spec, ParamValues values, Color3 albedo)
+        : place_(spec.factory.place), normal_albedo_(spec.normal_albedo), values_(std::move(values)),
+          albedo_(albedo) {}
 
     BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
-        ShadingArgs args(values_, hit);
-        // Values are clamped to their ranges, so construction succeeds but for constraints between
-        // parameters (kd + ks <= 1, say) that a texture breaks: such a point reflects nothing.
-        try {
-            return BSDF(spec_.factory.place(args, arena), hit.shading_frame());
-        } catch (const Error&) {
-            return BSDF(arena.make<LambertBxDF>(Color3(0.0f)), hit.shading_frame());
-        }
+        return BSDF(place_(ModelArgs(values_.args, &hit), arena), hit.shading_frame());
     }
-    Color3 albedo(const SurfaceHit&) const override { return albedo_; }
+    Color3 albedo(const SurfaceHit& hit) const override {
+        return normal_albedo_ ? normal_albedo_(ModelArgs(values_.args, &hit)) : albedo_;
+    }
 
 private:
-    const ModelSpec& spec_;
-    std::vector<ShadingArgs::Value> values_;
+    const std::function<const BxDF*(const ModelArgs&, ScratchArena&)>& place_;
+    const std::function<Color3(const ModelArgs&)>& normal_albedo_;
+    ParamValues values_;
     Color3 albedo_;
 };
 

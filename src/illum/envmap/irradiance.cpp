@@ -3,7 +3,7 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include "illum/envmap/resample.h"
-#include "illum/render/progress.h"
+#include "illum/util/progress.h"
 
 namespace illum {
 

@@ -7,7 +7,7 @@
 
 #include "illum/envmap/resample.h"
 #include "illum/math/frame.h"
-#include "illum/render/progress.h"
+#include "illum/util/progress.h"
 
 namespace illum {
 

@@ -5,7 +5,7 @@
 
 #include <oneapi/tbb/parallel_for.h>
 
-#include "illum/render/progress.h"
+#include "illum/util/progress.h"
 #include "illum/util/error.h"
 
 namespace illum {

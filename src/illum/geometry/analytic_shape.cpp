@@ -177,28 +177,29 @@ SurfaceHit AnalyticShape::alpha_point(const Crossing& c) const {
     return h;
 }
 
-ShapeSample AnalyticShape::world_sample(Vec3d p) const {
+ShapePoint AnalyticShape::world_sample(Vec3d p) const {
     SurfacePoint sp = surface_at(p);
-    ShapeSample s;
+    ShapePoint s;
     s.p = to_world(sp.p, &s.p_error);
     s.n = world_normal(sp.n);
     s.uv = sp.uv;
     return s;
 }
 
-ShapeSample AnalyticShape::sample_area(Point2f u) const {
+AreaShapeSample AnalyticShape::sample_area(Point2f u) const {
     Vec3d p = sample_object(u);
-    ShapeSample s = world_sample(p);
-    s.pdf = similarity_ ? 1 / area_ : float(1 / (object_area() * area_scale(surface_at(p).n)));
-    return s;
+    // p_A = 1 / A for a similarity, 1 / (A_obj J(n)) point by point otherwise (see analytic_shape.h).
+    AreaPdf pdf(similarity_ ? 1 / area_ : float(1 / (object_area() * area_scale(surface_at(p).n))));
+    return {world_sample(p), pdf};
 }
 
-float AnalyticShape::area_pdf(Point3f p) const {
-    if (similarity_) return 1 / area_;
-    return float(1 / (object_area() * area_scale(surface_at(to_object(p)).n)));
+AreaPdf AnalyticShape::area_pdf(Point3f p) const {
+    if (similarity_) return AreaPdf(1 / area_);
+    return AreaPdf(float(1 / (object_area() * area_scale(surface_at(to_object(p)).n))));
 }
 
-float AnalyticShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit, Normal3f n_hit) const {
+SolidAnglePdf AnalyticShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,
+                                 Normal3f n_hit) const {
     return area_pdf_to_solid_angle(area_pdf(p_hit), ctx.p, p_hit, n_hit, wi);
 }
 

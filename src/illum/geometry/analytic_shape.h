@@ -74,10 +74,11 @@ public:
 
     float area() const override { return area_; }
     Bounds3f bounds() const override;
-    ShapeSample sample_area(Point2f u) const override;
-    float pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit, Normal3f n_hit) const override;
+    AreaShapeSample sample_area(Point2f u) const override;
+    SolidAnglePdf pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,
+                      Normal3f n_hit) const override;
     // The density per unit world area with which sample_area() returns the world point p.
-    float area_pdf(Point3f p) const;
+    AreaPdf area_pdf(Point3f p) const;
 
     const Transform& world_from_object() const { return world_from_object_; }
     // Whether world_from_object is a similarity (then `scale()` is its uniform scale factor).
@@ -95,9 +96,8 @@ protected:
     };
     // Call at the end of the derived constructor: computes the world area.
     void init_area();
-    // The world point, error bound, normal and uv of the surface point nearest to object point p (pdf
-    // left 0).
-    ShapeSample world_sample(Vec3d p) const;
+    // The world point, error bound, normal and uv of the surface point nearest to object point p.
+    ShapePoint world_sample(Vec3d p) const;
 
     // Roots of the object-space ray o + t d with the unclipped surface (increasing), and whether a point
     // on it lies within the clipped part.

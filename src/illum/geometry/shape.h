@@ -6,6 +6,7 @@
 
 #include "illum/math/bounds.h"
 #include "illum/math/vector.h"
+#include "illum/radiometry/quantity.h"
 
 namespace illum {
 
@@ -16,13 +17,22 @@ struct ShapeSampleContext {
     Normal3f n; // zero for points not on a surface
 };
 
-struct ShapeSample {
+// A point on a shape: what a sample is, before its density.
+struct ShapePoint {
     Point3f p;
     Vector3f p_error;
     Normal3f n; // outward (emitting side) normal at p
     Point2f uv;
-    float pdf = 0; // per steradian for sample(), per square metre for sample_area()
 };
+
+// A sampled point and its density, per square metre on the shape (AreaShapeSample, from sample_area())
+// or per steradian at the receiver (ShapeSample, from sample()).
+template <class Pdf>
+struct ShapeSampleOf : ShapePoint {
+    Pdf pdf;
+};
+using AreaShapeSample = ShapeSampleOf<AreaPdf>;
+using ShapeSample = ShapeSampleOf<SolidAnglePdf>;
 
 class AreaShape {
 public:
@@ -30,18 +40,19 @@ public:
     virtual float area() const = 0;
     virtual Bounds3f bounds() const = 0;
     // A point uniformly distributed by area; pdf per unit area.
-    virtual ShapeSample sample_area(Point2f u) const = 0;
+    virtual AreaShapeSample sample_area(Point2f u) const = 0;
     // A point seen from ctx; pdf per unit solid angle at ctx.
     virtual std::optional<ShapeSample> sample(const ShapeSampleContext& ctx, Point2f u) const;
     // The solid-angle density with which sample() returns the point p_hit (normal n_hit) seen from ctx
     // along the unit direction wi.
-    virtual float pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit, Normal3f n_hit) const;
+    virtual SolidAnglePdf pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,
+                              Normal3f n_hit) const;
 
 protected:
     // Converts an area sample to a solid-angle one as seen from ctx (pdf_ω = pdf_A r² / |cos θ_l|).
-    static std::optional<ShapeSample> area_to_solid_angle(const ShapeSampleContext& ctx, ShapeSample s);
-    static float area_pdf_to_solid_angle(float pdf_area, Point3f p_ref, Point3f p_hit, Normal3f n_hit,
-                                         Vector3f wi);
+    static std::optional<ShapeSample> area_to_solid_angle(const ShapeSampleContext& ctx, AreaShapeSample s);
+    static SolidAnglePdf area_pdf_to_solid_angle(AreaPdf pdf_area, Point3f p_ref, Point3f p_hit,
+                                                 Normal3f n_hit, Vector3f wi);
 };
 
 } // namespace illum

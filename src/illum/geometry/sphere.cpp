@@ -98,17 +98,18 @@ std::optional<ShapeSample> SphereShape::sample(const ShapeSampleContext& ctx, Po
     // +z of the frame points from the receiver to the centre; the point faces the receiver, at -z.
     Vector3f w = spherical_direction(sin_alpha, cos_alpha, phi);
     Vector3f n_world = frame.to_world(Vector3f{-w.x, -w.y, -w.z});
-    ShapeSample s = world_sample(to_object(c + n_world * world_radius()));
-    s.pdf = 1 / (2 * kPi * one_minus_cos_max);
-    return s;
+    // Uniform over the cone's solid angle 2π (1 - cos θmax).
+    SolidAnglePdf pdf(1 / (2 * kPi * one_minus_cos_max));
+    return ShapeSample{world_sample(to_object(c + n_world * world_radius())), pdf};
 }
 
-float SphereShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit, Normal3f n_hit) const {
+SolidAnglePdf SphereShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,
+                               Normal3f n_hit) const {
     if (!cone_sampling(ctx.p)) return AnalyticShape::pdf(ctx, wi, p_hit, n_hit);
     float sin2_max = sqr(world_radius()) / distance_squared(ctx.p, center());
     float one_minus_cos_max = 1 - safe_sqrt(1 - sin2_max);
     if (sin2_max < 0.00068523f) one_minus_cos_max = sin2_max / 2;
-    return 1 / (2 * kPi * one_minus_cos_max);
+    return SolidAnglePdf(1 / (2 * kPi * one_minus_cos_max));
 }
 
 } // namespace illum

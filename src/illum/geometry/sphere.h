@@ -27,7 +27,8 @@ public:
     float world_radius() const { return float(scale() * radius_); }
 
     std::optional<ShapeSample> sample(const ShapeSampleContext& ctx, Point2f u) const override;
-    float pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit, Normal3f n_hit) const override;
+    SolidAnglePdf pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,
+                      Normal3f n_hit) const override;
 
 protected:
     int roots(Vec3d o, Vec3d d, double t[2]) const override;

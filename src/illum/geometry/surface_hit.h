@@ -6,21 +6,20 @@
 
 #include "illum/geometry/ray.h"
 #include "illum/math/frame.h"
+#include "illum/texture/texture.h"
 
 namespace illum {
 
 class Material;
 class Light;
 
-struct SurfaceHit {
-    Point3f p;
+// p, n and uv are the TextureEvalContext part (textures evaluate at a hit directly).
+struct SurfaceHit : TextureEvalContext {
     Vector3f p_error;
     float t = 0;
     Vector3f wo;   // towards the ray origin, normalised
-    Normal3f n;    // geometric normal, on the side the shape's orientation says is outside
     Normal3f ns;   // shading normal, on the same side as n
     Vector3f dpdu; // tangent along u (for anisotropic models), may be zero
-    Point2f uv;
     const Material* material = nullptr;
     const Light* area_light = nullptr; // the emitter on this surface, if any
     std::uint32_t geom_id = 0, prim_id = 0;

@@ -85,9 +85,9 @@ Bounds3f TriangleShape::bounds() const {
     return b;
 }
 
-ShapeSample TriangleShape::at_barycentrics(float b0, float b1, float b2) const {
+ShapePoint TriangleShape::at_barycentrics(float b0, float b1, float b2) const {
     auto v = mesh_->vertices(index_);
-    ShapeSample s;
+    ShapePoint s;
     s.p = barycentric(v[0], v[1], v[2], b0, b1, b2);
     s.p_error =
         (abs(Vector3f(v[0]) * b0) + abs(Vector3f(v[1]) * b1) + abs(Vector3f(v[2]) * b2)) * gamma_bound(6);
@@ -102,11 +102,9 @@ ShapeSample TriangleShape::at_barycentrics(float b0, float b1, float b2) const {
     return s;
 }
 
-ShapeSample TriangleShape::sample_area(Point2f u) const {
+AreaShapeSample TriangleShape::sample_area(Point2f u) const {
     auto b = sample_uniform_triangle(u);
-    ShapeSample s = at_barycentrics(b[0], b[1], b[2]);
-    s.pdf = 1 / area_;
-    return s;
+    return {at_barycentrics(b[0], b[1], b[2]), AreaPdf(1 / area_)};
 }
 
 bool TriangleShape::use_spherical_sampling(Point3f p) const {
@@ -127,14 +125,14 @@ std::optional<ShapeSample> TriangleShape::sample(const ShapeSampleContext& ctx, 
     float pdf = 0;
     auto b = sample_spherical_triangle(mesh_->vertices(index_), ctx.p, u, &pdf);
     if (!(pdf > 0)) return std::nullopt; // degenerate as seen from p: no solid angle to sample
-    ShapeSample s = at_barycentrics(b[0], b[1], b[2]);
-    s.pdf = pdf;
-    return s;
+    return ShapeSample{at_barycentrics(b[0], b[1], b[2]), SolidAnglePdf(pdf)};
 }
 
-float TriangleShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit, Normal3f n_hit) const {
+SolidAnglePdf TriangleShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,
+                                 Normal3f n_hit) const {
     if (!use_spherical_sampling(ctx.p)) return AreaShape::pdf(ctx, wi, p_hit, n_hit);
-    return spherical_triangle_pdf(mesh_->vertices(index_), ctx.p);
+    // Uniform over the spherical triangle: 1 / Ω (Arvo 1995).
+    return SolidAnglePdf(spherical_triangle_pdf(mesh_->vertices(index_), ctx.p));
 }
 
 } // namespace illum

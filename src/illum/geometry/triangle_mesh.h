@@ -49,9 +49,10 @@ public:
 
     float area() const override { return area_; }
     Bounds3f bounds() const override;
-    ShapeSample sample_area(Point2f u) const override;
+    AreaShapeSample sample_area(Point2f u) const override;
     std::optional<ShapeSample> sample(const ShapeSampleContext& ctx, Point2f u) const override;
-    float pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit, Normal3f n_hit) const override;
+    SolidAnglePdf pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,
+                      Normal3f n_hit) const override;
 
     // Below 0.05 sr area sampling is more efficient: on the Cornell box, whose light subtends 0.02-0.1 sr
     // from most of the box, MSE x time is 0.0085 with this threshold, 0.0085 with area sampling only and
@@ -62,7 +63,7 @@ public:
 
 private:
     bool use_spherical_sampling(Point3f p) const;
-    ShapeSample at_barycentrics(float b0, float b1, float b2) const;
+    ShapePoint at_barycentrics(float b0, float b1, float b2) const;
     const TriangleMesh* mesh_;
     std::uint32_t index_;
     float area_;

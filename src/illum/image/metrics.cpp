@@ -17,28 +17,60 @@ void require_same_size(const Image& a, const Image& b, const char* what) {
                     std::to_string(b.height()) + ")");
 }
 
-// Mean over all pixels of term(a_c, b_c) for each channel c.
+// Mean over the pixels of term(a_c, b_c) for each channel c: all pixels, or only those where both images
+// are finite when `finite_only` (0 when no pixel is left).
 template <class Term>
-ErrorStats mean_of(const Image& a, const Image& b, const char* what, Term term) {
+ErrorStats mean_of(const Image& a, const Image& b, const char* what, Term term, bool finite_only = false) {
     require_same_size(a, b, what);
     ErrorStats s;
-    const std::size_t n = a.pixel_count();
-    if (n == 0) return s;
     std::array<double, 3> sum{0, 0, 0};
+    std::size_t n = 0;
     const Color3* pa = a.data();
     const Color3* pb = b.data();
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < a.pixel_count(); ++i) {
+        if (finite_only && !(is_finite_pixel(pa[i]) && is_finite_pixel(pb[i]))) continue;
+        ++n;
         for (int c = 0; c < 3; ++c) sum[c] += term(double(pa[i][c]), double(pb[i][c]));
+    }
+    if (n == 0) return s;
     for (int c = 0; c < 3; ++c) s.channel[c] = sum[c] / double(n);
     s.overall = (sum[0] + sum[1] + sum[2]) / (3.0 * double(n));
     return s;
 }
 
+ErrorStats means_of(const Image& image, bool finite_only) {
+    ErrorStats s;
+    std::array<double, 3> sum{0, 0, 0};
+    std::size_t n = 0;
+    const Color3* p = image.data();
+    for (std::size_t i = 0; i < image.pixel_count(); ++i) {
+        if (finite_only && !is_finite_pixel(p[i])) continue;
+        ++n;
+        for (int c = 0; c < 3; ++c) sum[c] += p[i][c];
+    }
+    if (n == 0) return s;
+    for (int c = 0; c < 3; ++c) s.channel[c] = sum[c] / double(n);
+    s.overall = (s.channel[0] + s.channel[1] + s.channel[2]) / 3.0;
+    return s;
+}
+
+ErrorStats relative_difference(const ErrorStats& ma, const ErrorStats& mb) {
+    auto rel = [](double x, double y) {
+        if (y != 0) return (x - y) / y;
+        if (x == 0) return 0.0;
+        return std::copysign(std::numeric_limits<double>::infinity(), x);
+    };
+    ErrorStats s;
+    for (int c = 0; c < 3; ++c) s.channel[c] = rel(ma.channel[c], mb.channel[c]);
+    s.overall = rel(ma.overall, mb.overall);
+    return s;
+}
+
+double squared_error(double x, double y) { return (x - y) * (x - y); }
+
 } // namespace
 
-ErrorStats mse(const Image& a, const Image& reference) {
-    return mean_of(a, reference, "mse", [](double x, double y) { return (x - y) * (x - y); });
-}
+ErrorStats mse(const Image& a, const Image& reference) { return mean_of(a, reference, "mse", squared_error); }
 
 ErrorStats rmse(const Image& a, const Image& reference) {
     ErrorStats s = mse(a, reference);
@@ -57,30 +89,39 @@ ErrorStats mean_relative_error(const Image& a, const Image& reference, double ep
                    [eps](double x, double y) { return std::abs(x - y) / (std::abs(y) + eps); });
 }
 
-ErrorStats channel_means(const Image& image) {
-    ErrorStats s;
-    const std::size_t n = image.pixel_count();
-    if (n == 0) return s;
-    std::array<double, 3> sum{0, 0, 0};
-    const Color3* p = image.data();
-    for (std::size_t i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c) sum[c] += p[i][c];
-    for (int c = 0; c < 3; ++c) s.channel[c] = sum[c] / double(n);
-    s.overall = (s.channel[0] + s.channel[1] + s.channel[2]) / 3.0;
-    return s;
-}
+ErrorStats channel_means(const Image& image) { return means_of(image, false); }
 
 ErrorStats relative_mean_difference(const Image& a, const Image& reference) {
-    const ErrorStats ma = channel_means(a), mb = channel_means(reference);
-    auto rel = [](double x, double y) {
-        if (y != 0) return (x - y) / y;
-        if (x == 0) return 0.0;
-        return std::copysign(std::numeric_limits<double>::infinity(), x);
-    };
-    ErrorStats s;
-    for (int c = 0; c < 3; ++c) s.channel[c] = rel(ma.channel[c], mb.channel[c]);
-    s.overall = rel(ma.overall, mb.overall);
-    return s;
+    return relative_difference(channel_means(a), channel_means(reference));
+}
+
+std::size_t count_nonfinite_pixels(const Image& image) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < image.pixel_count(); ++i) n += !is_finite_pixel(image.data()[i]);
+    return n;
+}
+
+FiniteComparison compare_finite(const Image& a, const Image& reference, double eps) {
+    FiniteComparison r;
+    r.nonfinite = count_nonfinite_pixels(a);
+    r.reference_nonfinite = count_nonfinite_pixels(reference);
+    r.mean = means_of(a, true);
+    r.reference_mean = means_of(reference, true);
+    r.relative_mean_difference = relative_difference(r.mean, r.reference_mean);
+    if (a.width() != reference.width() || a.height() != reference.height()) return r;
+    for (std::size_t i = 0; i < a.pixel_count(); ++i)
+        r.compared += is_finite_pixel(a.data()[i]) && is_finite_pixel(reference.data()[i]);
+    ErrorStats m = mean_of(a, reference, "mse", squared_error, true);
+    for (double& c : m.channel) c = std::sqrt(c);
+    m.overall = std::sqrt(m.overall);
+    r.rmse = m;
+    r.rel_mse = mean_of(
+        a, reference, "relmse", [eps](double x, double y) { return squared_error(x, y) / (y * y + eps); },
+        true);
+    r.mean_relative_error = mean_of(
+        a, reference, "mean relative error",
+        [eps](double x, double y) { return std::abs(x - y) / (std::abs(y) + eps); }, true);
+    return r;
 }
 
 Image downsample(const Image& image, int factor) {

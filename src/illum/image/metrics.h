@@ -1,9 +1,13 @@
 // Error metrics between an image and a reference, summed in double. Every metric that compares pixel by
 // pixel requires equal sizes and throws illum::Error otherwise. Non-finite pixels are not skipped: they
-// make the result NaN or infinite, which is what a comparison should report.
+// make the result NaN or infinite, which is what a comparison should report. compare_finite() is the
+// other choice, for a report (`illum diff`): it leaves them out and says how many it left out.
 #pragma once
 
 #include <array>
+#include <cmath>
+#include <cstddef>
+#include <optional>
 
 #include "illum/image/image.h"
 
@@ -33,6 +37,24 @@ ErrorStats channel_means(const Image& image);
 // (mean(a) - mean(b)) / mean(b) per channel and for the overall means; the images may differ in size.
 // When a reference mean is 0 the entry is 0 if the other mean is 0 too and +-inf otherwise.
 ErrorStats relative_mean_difference(const Image& a, const Image& reference);
+
+// True when every channel of the pixel is finite (no Inf, no NaN).
+inline bool is_finite_pixel(const Color3& c) {
+    return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
+}
+// The number of pixels with an Inf or NaN in some channel.
+std::size_t count_nonfinite_pixels(const Image& image);
+
+// The figures of `illum diff` without the pixels that have an Inf or NaN: one such pixel would make every
+// figure Inf or NaN and hide what the rest of the image says. Each mean is over that image's finite
+// pixels; the per-pixel metrics (present when the sizes agree) are over the pixels finite in both.
+struct FiniteComparison {
+    std::size_t nonfinite = 0, reference_nonfinite = 0; // pixels left out of each image's mean
+    std::size_t compared = 0; // pixels in the per-pixel metrics (finite in both); 0 when sizes differ
+    ErrorStats mean, reference_mean, relative_mean_difference;
+    std::optional<ErrorStats> rmse, rel_mse, mean_relative_error; // when the sizes agree
+};
+FiniteComparison compare_finite(const Image& a, const Image& reference, double eps = kRelativeEps);
 
 // Box-filters the image down by an integer factor: each output pixel is the mean of a factor x factor
 // block. The width and height must be multiples of factor (throws illum::Error otherwise).

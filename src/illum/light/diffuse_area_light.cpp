@@ -27,30 +27,29 @@ bool DiffuseAreaLight::masked(Point3f p, Normal3f n, Point2f uv) const {
 
 std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContext& ctx, Point2f u) const {
     auto ss = shape_->sample({ctx.p, ctx.p_error, ctx.n}, u);
-    if (!ss || !(ss->pdf > 0)) return std::nullopt;
+    if (!ss || !(ss->pdf > SolidAnglePdf(0))) return std::nullopt;
     Vector3f d = ss->p - ctx.p;
     float d2 = length_squared(d);
     if (d2 == 0) return std::nullopt;
     Vector3f wi = d / std::sqrt(d2);
     Radiance3 l = emitted(ss->n, -wi);
     if (l.is_black() || masked(ss->p, ss->n, ss->uv)) return std::nullopt;
-    SolidAnglePdf pdf(ss->pdf);
-    return LightLiSample{wi, l, biradiance(l, pdf), pdf, ss->p, ss->p_error, ss->n, false};
+    return LightLiSample{wi, l, biradiance(l, ss->pdf), ss->pdf, ss->p, ss->p_error, ss->n, false};
 }
 
 SolidAnglePdf DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, Vector3f wi,
                                        const SurfaceHit* hit) const {
     if (!hit) return SolidAnglePdf(0);
-    return SolidAnglePdf(shape_->pdf({ctx.p, ctx.p_error, ctx.n}, wi, hit->p, hit->n));
+    return shape_->pdf({ctx.p, ctx.p_error, ctx.n}, wi, hit->p, hit->n);
 }
 
 Power3 DiffuseAreaLight::power() const {
-    return Power3(lambertian_exitance(radiance_).rgb * shape_->area() * (two_sided_ ? 2.0f : 1.0f));
+    return lambertian_exitance(radiance_) * Area(shape_->area()) * (two_sided_ ? 2.0f : 1.0f);
 }
 
 std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2) const {
-    ShapeSample ss = shape_->sample_area(u1);
-    if (!(ss.pdf > 0) || masked(ss.p, ss.n, ss.uv)) return std::nullopt;
+    AreaShapeSample ss = shape_->sample_area(u1);
+    if (!(ss.pdf > AreaPdf(0)) || masked(ss.p, ss.n, ss.uv)) return std::nullopt;
     Vector3f n(ss.n);
     float side_pmf = 1;
     if (two_sided_) {
@@ -68,7 +67,7 @@ std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2)
     if (!(cos_theta > 0)) return std::nullopt;
     Vector3f w = Frame::from_z(n).to_world(w_local);
     SolidAnglePdf pdf_dir(cosine_hemisphere_pdf(cos_theta) * side_pmf);
-    AreaPdf pdf_pos(ss.pdf);
+    AreaPdf pdf_pos = ss.pdf;
     Point3f o = offset_ray_origin(ss.p, ss.p_error, ss.n, w);
     Radiance3 l = emitted(ss.n, w);
     return LightLeSample{Ray{o, w}, ss.n, l, pdf_pos, pdf_dir, l * cos_theta / pdf_pos / pdf_dir};

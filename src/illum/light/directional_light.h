@@ -21,12 +21,12 @@ public:
 
     std::optional<LightLiSample> sample_li(const LightSampleContext&, Point2f) const override {
         // The struct's biradiance is the irradiance on a perpendicular surface (see light.h).
-        return LightLiSample{w_, {}, Biradiance3(e_.rgb), SolidAnglePdf(1), {}, {}, {}, true};
+        return LightLiSample{w_, {}, biradiance(e_), SolidAnglePdf(1), {}, {}, {}, true};
     }
     SolidAnglePdf pdf_li(const LightSampleContext&, Vector3f, const SurfaceHit*) const override {
         return SolidAnglePdf(0);
     }
-    Power3 power() const override { return Power3(e_.rgb * (kPi * radius_ * radius_)); }
+    Power3 power() const override { return e_ * Area(kPi * radius_ * radius_); }
     // A point uniform on the disk of the scene's radius outside the scene, perpendicular to w; the
     // direction is the delta -w (pdf_dir = 1 as a probability): flux = E / p_pos = E π r².
     std::optional<LightLeSample> sample_le(Point2f u1, Point2f) const override {

@@ -73,7 +73,7 @@ std::optional<LightLiSample> ImageEnvironmentLight::sample_li(const LightSampleC
     }
     }
     Radiance3 l = radiance(wi);
-    if (l.is_black() || !(pdf.value > 0) || !std::isfinite(pdf.value)) return std::nullopt;
+    if (l.is_black() || !(pdf > SolidAnglePdf(0)) || !pdf.is_finite()) return std::nullopt;
     return LightLiSample{wi, l, biradiance(l, pdf), pdf, {}, {}, {}, true};
 }
 

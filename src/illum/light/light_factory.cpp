@@ -7,6 +7,7 @@
 #include "illum/light/point_light.h"
 #include "illum/light/spot_light.h"
 #include "illum/light/uniform_environment_light.h"
+#include "illum/param/spectrum_param.h"
 
 namespace illum {
 
@@ -26,6 +27,20 @@ void normalise_to_power(const LightDesc& l, Color3& c, float power_per_unit) {
     }
 }
 
+// A light's emission parameter ("I", "L") as RGB. pbrt-v4 reads it as a spectrum of any form: "rgb", or a
+// "spectrum" (named, such as "stdillum-A"; wavelength-value pairs; a file of such pairs) or "blackbody".
+// A spectrum is normalised to luminance 1 ("scale /= SpectrumToPhotometric(I)"), an RGB value is not
+// (pbrt-v4 normalises only its illuminant part); `scale` and `power` apply to either afterwards.
+std::optional<Color3> emission_rgb(const LightDesc& l, const std::string& name) {
+    const Param* p = l.params.find(name);
+    if (!p) return std::nullopt;
+    if (p->type == ParamType::RGB) return l.params.get_rgb(name);
+    if (p->type != ParamType::Spectrum)
+        l.params.fail(*p, fmt::format("parameter \"{}\" has type {}, expected rgb, spectrum or blackbody",
+                                      name, to_string(p->type)));
+    return spectrum_param_rgb(*p, SpectrumKind::Illuminant);
+}
+
 Vector3f unit_or_fail(const LightDesc& l, Vector3f v, const char* what) {
     float len = length(v);
     if (!(len > 0) || !std::isfinite(len))
@@ -41,7 +56,7 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
         throw Error(l.loc, fmt::format("light \"{}\": bad scale {}", l.type, scale));
     if (l.type == "point") {
         Color3 i(1.0f);
-        if (auto rgb = l.params.get_rgb("I")) i = *rgb;
+        if (auto rgb = emission_rgb(l, "I")) i = *rgb;
         Point3f from = l.params.get_point3("from").value_or(Point3f{0, 0, 0});
         Point3f p = l.world_from_light(from);
         normalise_to_power(l, i, 4 * kPi); // Φ = 4π I
@@ -49,14 +64,14 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
     }
     if (l.type == "spot") {
         Color3 i(1.0f);
-        if (auto rgb = l.params.get_rgb("I")) i = *rgb;
+        if (auto rgb = emission_rgb(l, "I")) i = *rgb;
         Point3f from = l.params.get_point3("from").value_or(Point3f{0, 0, 0});
         Point3f to = l.params.get_point3("to").value_or(Point3f{0, 0, 1});
         float cone = l.params.get_float("coneangle", 30);
-        float delta = l.params.get_float("conedelta", 5);
+        float delta = l.params.get_float("conedeltaangle", 5); // pbrt-v4's name (and RenderMan's)
         if (!(cone > 0 && cone <= 180) || !(delta >= 0))
             throw Error(l.loc,
-                        fmt::format("light \"spot\": coneangle must be in (0, 180] and conedelta >= 0, "
+                        fmt::format("light \"spot\": coneangle must be in (0, 180] and conedeltaangle >= 0, "
                                     "not {} and {}",
                                     cone, delta));
         Point3f p = l.world_from_light(from);
@@ -68,7 +83,7 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
     }
     if (l.type == "distant") {
         Color3 e(1.0f);
-        if (auto rgb = l.params.get_rgb("L")) e = *rgb;
+        if (auto rgb = emission_rgb(l, "L")) e = *rgb;
         Point3f from = l.params.get_point3("from").value_or(Point3f{0, 0, 0});
         Point3f to = l.params.get_point3("to").value_or(Point3f{0, 0, 1});
         // Light travels from `from` towards `to`; the light lies in direction from - to.
@@ -89,10 +104,21 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
             throw Error(
                 l.params.find("sampling")->loc,
                 fmt::format("\"sampling\" must be importance, uniform or none, not \"{}\"", sampling_name));
+        if (const Param* portal = l.params.find("portal")) {
+            // pbrt-v4 then emits only in the directions the portal (a window quadrilateral) covers and
+            // samples those better; illum keeps the whole map: the same image wherever the scene's walls
+            // hide the other directions, as they do in the interiors portals are meant for.
+            portal->used = true;
+            ctx.unsupported(portal->loc,
+                            "infinite light \"portal\" is not supported: the whole environment emits and is "
+                            "sampled");
+        }
         std::string filename = l.params.get_string("filename", "");
         if (!filename.empty()) {
-            if (l.params.has("L"))
-                ctx.unsupported(l.loc, "\"L\" is ignored for an environment light with a \"filename\"");
+            // pbrt-v4 refuses both ("Can't specify both emission L and filename"): which one was meant
+            // is not known, so neither is guessed.
+            if (const Param* lp = l.params.find("L"))
+                throw Error(lp->loc, "infinite light: \"L\" and \"filename\" cannot both be given");
             std::optional<EnvLayout> layout;
             std::string layout_name = l.params.get_string("layout", ""); // illum extension
             if (!layout_name.empty()) {
@@ -121,7 +147,7 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
             return light;
         }
         Color3 c(1.0f);
-        if (auto rgb = l.params.get_rgb("L")) c = *rgb;
+        if (auto rgb = emission_rgb(l, "L")) c = *rgb;
         // A constant environment L gives illuminance π L on an upward surface.
         if (illuminance > 0) c *= illuminance / kPi; // pbrt-v4: the RGB multiplier is kept, as for "power"
         if (sampling != EnvSampling::Importance) {

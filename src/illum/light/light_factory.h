@@ -7,7 +7,7 @@
 #include <string>
 
 #include "illum/light/light.h"
-#include "illum/scene/scene_desc.h"
+#include "illum/param/entity.h"
 
 namespace illum {
 

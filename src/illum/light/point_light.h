@@ -21,7 +21,8 @@ public:
     SolidAnglePdf pdf_li(const LightSampleContext&, Vector3f, const SurfaceHit*) const override {
         return SolidAnglePdf(0);
     }
-    Power3 power() const override { return Power3(intensity_.rgb * (4 * kPi)); }
+    // Φ = ∫ I dω = 4π I.
+    Power3 power() const override { return intensity_ * SolidAngle(4 * kPi); }
     // Uniform over the sphere of directions: flux = I / (1/4π) = 4π I for every photon.
     std::optional<LightLeSample> sample_le(Point2f, Point2f u2) const override {
         SolidAnglePdf pdf_dir(uniform_sphere_pdf());

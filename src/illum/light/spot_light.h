@@ -46,7 +46,7 @@ public:
         return SolidAnglePdf(0);
     }
     Power3 power() const override {
-        return Power3(intensity_.rgb * (2 * kPi * ((1 - cos_start_) + (cos_start_ - cos_end_) / 2)));
+        return intensity_ * SolidAngle(2 * kPi * ((1 - cos_start_) + (cos_start_ - cos_end_) / 2));
     }
     // Uniform within the cone θ <= θ_end: flux = I(θ) / p_dir.
     std::optional<LightLeSample> sample_le(Point2f, Point2f u2) const override {

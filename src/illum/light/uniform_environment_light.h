@@ -22,9 +22,10 @@ public:
         return SolidAnglePdf(uniform_sphere_pdf());
     }
     Radiance3 le(const Ray&) const override { return radiance_; }
-    // The power that crosses a disk of the scene's radius from all directions: 4π · π r² · L.
+    // The power that crosses a disk of the scene's radius from all directions: Φ = L G with the étendue
+    // G = 4π · π r² of the disk and the sphere of directions.
     Power3 power() const override {
-        return Power3(radiance_.rgb * (4 * kPi * kPi * scene_radius_ * scene_radius_));
+        return radiance_ * Etendue(4 * kPi * kPi * scene_radius_ * scene_radius_);
     }
 
     // A uniform direction, then a point on the disk of the scene's radius perpendicular to it, outside

@@ -8,6 +8,7 @@
 // drops the tag. Everything is a thin wrapper over Color3 or float: zero cost at run time.
 #pragma once
 
+#include <cmath>
 #include <type_traits>
 
 #include "illum/radiometry/color.h"
@@ -30,7 +31,15 @@ struct Scalar {
     constexpr Scalar operator/(float s) const { return Scalar(value / s); }
     Scalar& operator+=(Scalar o) { return *this = *this + o; }
     Scalar& operator*=(float s) { return *this = *this * s; }
-    constexpr auto operator<=>(const Scalar&) const = default;
+    // Comparisons of the value (of one type only). Written out rather than a defaulted <=>: g++ 12 turns
+    // `p > Scalar(0)` through std::partial_ordering into an extra unordered/equal test.
+    constexpr bool operator==(Scalar o) const { return value == o.value; }
+    constexpr bool operator!=(Scalar o) const { return value != o.value; }
+    constexpr bool operator<(Scalar o) const { return value < o.value; }
+    constexpr bool operator<=(Scalar o) const { return value <= o.value; }
+    constexpr bool operator>(Scalar o) const { return value > o.value; }
+    constexpr bool operator>=(Scalar o) const { return value >= o.value; }
+    bool is_finite() const { return std::isfinite(value); }
 };
 // A dimensionless scalar is a plain float.
 template <class Tag>
@@ -58,6 +67,12 @@ constexpr auto make_scalar(float v) {
         return Scalar<W, M, S>(v);
 }
 } // namespace detail
+
+// A plain number over a quantity has the inverse units: |cos θ| / p_ω is a solid angle [sr].
+template <int W, int M, int S, class Tag>
+constexpr auto operator/(float s, Scalar<W, M, S, Tag> q) {
+    return detail::make_scalar<-W, -M, -S>(s / q.value);
+}
 
 template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
 constexpr auto operator*(Scalar<W1, M1, S1, T1> a, Scalar<W2, M2, S2, T2> b) {
@@ -94,6 +109,7 @@ struct Quantity3 {
     constexpr float luminance() const { return rgb.luminance(); }
     constexpr float average() const { return rgb.average(); }
     bool is_finite() const { return rgb.is_finite(); }
+    bool has_negative() const { return rgb.has_negative(); }
 };
 
 namespace detail {
@@ -149,6 +165,8 @@ using SolidAngle = Scalar<0, 0, 1>;           // [sr]
 using Area = Scalar<0, 2, 0>;                 // [m^2]
 using SolidAnglePdf = Scalar<0, 0, -1>;       // probability per steradian [sr^-1]
 using AreaPdf = Scalar<0, -2, 0, AreaPdfTag>; // probability per square metre [m^-2]
+using AreaPerSolidAngle = Scalar<0, 2, -1>; // the Jacobian dA/dω of directions to surface points [m^2 sr^-1]
+using Etendue = Scalar<0, 2, 1>;            // area x solid angle [m^2 sr]
 
 // RGB quantities.
 using Power3 = Quantity3<1, 0, 0>;       // radiant flux [W]
@@ -172,11 +190,23 @@ constexpr Biradiance3 biradiance(Radiance3 l, SolidAnglePdf pdf) { return Biradi
 constexpr Radiance3 reflected(Bsdf3 f, Biradiance3 e, float cos_theta) {
     return Radiance3(f.rgb * e.rgb * cos_theta);
 }
+// A collimated beam (a directional light) that delivers irradiance E_⊥ to a surface perpendicular to it
+// has biradiance E_⊥: the cosine at the receiver is the reflection equation's, f · E_⊥ · cos θ.
+constexpr Biradiance3 biradiance(Irradiance3 e_perpendicular) { return Biradiance3(e_perpendicular.rgb); }
+
+// The Jacobian of the map from directions at a receiver to points on a surface at distance r whose
+// normal makes the angle θ with the line of sight: dA = r^2 / |cos θ| dω (PBR 4th ed. §4.2.3).
+constexpr AreaPerSolidAngle area_per_solid_angle(float distance_squared, float abs_cos) {
+    return AreaPerSolidAngle(distance_squared / abs_cos);
+}
 // A pdf per unit area of a point at distance r seen at angle θ (cos of the angle between its normal and
-// the line of sight) becomes a pdf per steradian: p_ω = p_A r^2 / |cos θ|.
+// the line of sight) becomes a pdf per steradian: p_ω = p_A dA/dω = p_A r^2 / |cos θ| (PBR 4th ed.
+// §6.1.4). Two forms of the same conversion, for their rounding: (p_A r^2) / |cos θ| here, and
+// p_A (r^2 / |cos θ|) from the Jacobian above, which a sampler computes once for its sample.
 constexpr SolidAnglePdf to_solid_angle(AreaPdf p, float distance_squared, float abs_cos) {
     return SolidAnglePdf(p.value * distance_squared / abs_cos);
 }
+constexpr SolidAnglePdf to_solid_angle(AreaPdf p, AreaPerSolidAngle jacobian) { return p * jacobian; }
 // Irradiance on a surface from radiance over a solid angle at a cosine.
 constexpr Irradiance3 irradiance(Radiance3 l, SolidAngle w, float cos_theta) {
     return Irradiance3(l.rgb * w.value * cos_theta);
@@ -184,6 +214,25 @@ constexpr Irradiance3 irradiance(Radiance3 l, SolidAngle w, float cos_theta) {
 // The exitance of a Lambertian emitter of radiance L: M = π L; its power over an area A: Φ = π A L.
 constexpr Irradiance3 lambertian_exitance(Radiance3 l) {
     return Irradiance3(l.rgb * 3.14159265358979323846f);
+}
+
+// Estimators.
+
+// The throughput weight of a direction ω_i sampled with solid-angle density p: f(ω_o, ω_i) |cos θ_i| / p
+// (dimensionless: [sr^-1] [sr^-1]^-1), the factor that one bounce adds to a path's throughput in the
+// Monte Carlo estimate of the rendering equation (PBR 4th ed. §13.1). Evaluated as
+// f · (|cos θ_i| / p).
+constexpr Color3 throughput_weight(Bsdf3 f, float abs_cos, SolidAnglePdf pdf) { return f * (abs_cos / pdf); }
+
+// The power heuristic with β = 2 (Veach 1997, §9.2.4): w_a = p_a^2 / (p_a^2 + p_b^2), for one sample
+// from each of two strategies. The weights only sum to one when both densities are over the same measure
+// (both per steradian, say), so both arguments have one type: mixing an area pdf with a solid-angle pdf,
+// or a pdf with a plain number, does not compile. An infinite p_a (a delta) takes the whole weight.
+template <int W, int M, int S, class Tag>
+inline float power_heuristic(Scalar<W, M, S, Tag> pdf_a, Scalar<W, M, S, Tag> pdf_b) {
+    float a = pdf_a.value * pdf_a.value, b = pdf_b.value * pdf_b.value;
+    if (std::isinf(a)) return 1;
+    return a + b > 0 ? a / (a + b) : 0.0f;
 }
 
 } // namespace illum

@@ -1,5 +1,6 @@
 // Debug passes: the albedo (the first hit's material reflectance) and the shading normal (world space,
-// components in [-1, 1]) of the first surface seen. Not radiance.
+// components in [-1, 1]) of the first surface seen. Not radiance: the film's radiance channels carry the
+// value unchanged (film_value(), the one place where a debug value enters the film).
 #pragma once
 
 #include "illum/render/integrator.h"
@@ -11,7 +12,11 @@ public:
     enum class Pass { Albedo, Normal };
     AovIntegrator(const Scene& scene, Pass pass) : Integrator(scene), pass_(pass) {}
 
-    Color3 estimate(const Ray& camera_ray, ThreadContext& tc) const override {
+    Radiance3 estimate(const Ray& camera_ray, ThreadContext& tc) const override {
+        return film_value(value(camera_ray, tc));
+    }
+    // The pass's value at the first surface along the ray (zero where there is none).
+    Color3 value(const Ray& camera_ray, ThreadContext& tc) const {
         Ray ray = camera_ray;
         for (int i = 0; i < 64; ++i) {
             SurfaceHit hit;
@@ -29,6 +34,8 @@ public:
     bool signed_values() const override { return pass_ == Pass::Normal; }
 
 private:
+    // The film stores radiance; a debug value goes into its three channels as it is.
+    static Radiance3 film_value(Color3 v) { return Radiance3(v); }
     Pass pass_;
 };
 

@@ -17,7 +17,7 @@ Radiance3 DirectIntegrator::reflected_from(const Light& light, const SurfaceHit&
         if (!f.is_black() && cos_i > 0 && unoccluded(hit, *ls, tc)) {
             Radiance3 contrib = reflected(f, ls->biradiance, cos_i);
             if (is_delta(light.type())) return contrib; // exact: no integral, no BSDF sample
-            l += contrib * power_heuristic(ls->pdf.value, bsdf.pdf(hit.wo, ls->wi).value);
+            l += contrib * power_heuristic(ls->pdf, bsdf.pdf(hit.wo, ls->wi));
         }
     }
     if (is_delta(light.type())) return l;
@@ -29,21 +29,22 @@ Radiance3 DirectIntegrator::reflected_from(const Light& light, const SurfaceHit&
     Ray ray = hit.spawn_ray(bs->wi);
     SurfaceHit lhit;
     Radiance3 le;
-    float p_light = 0;
+    SolidAnglePdf p_light;
     if (intersect(ray, &lhit, tc)) {
         if (lhit.area_light != &light) return l;
         le = light.radiance(lhit, lhit.wo);
-        if (!bs->is_specular()) p_light = light.pdf_li(ctx, bs->wi, &lhit).value;
+        if (!bs->is_specular()) p_light = light.pdf_li(ctx, bs->wi, &lhit);
     } else if (light.type() == LightType::Infinite) {
         le = light.le(ray);
-        if (!bs->is_specular()) p_light = light.pdf_li(ctx, bs->wi, nullptr).value;
+        if (!bs->is_specular()) p_light = light.pdf_li(ctx, bs->wi, nullptr);
     }
     if (le.is_black()) return l;
     // A stochastic (layered) BSDF's sample pdf is not the density pdf() gives; both strategies must weigh
     // with the same function for the weights to sum to one, so use pdf() here as light sampling does.
-    float p_bsdf = bs->pdf_is_proportional ? bsdf.pdf(hit.wo, bs->wi).value : bs->pdf.value;
+    SolidAnglePdf p_bsdf = bs->pdf_is_proportional ? bsdf.pdf(hit.wo, bs->wi) : bs->pdf;
     float w = bs->is_specular() ? 1.0f : power_heuristic(p_bsdf, p_light);
-    l += le * (bs->f.rgb * (abs_dot(bs->wi, hit.ns) * w / bs->pdf.value));
+    // The MIS-weighted BSDF-sampling estimate: L_e · f |cos θ| w / p.
+    l += le * throughput_weight(bs->f, abs_dot(bs->wi, hit.ns) * w, bs->pdf);
     return l;
 }
 
@@ -75,7 +76,7 @@ Radiance3 DirectIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         ++depth;
         auto bs = bsdf.sample(hit.wo, tc.sampler.get_1d(), tc.sampler.get_2d());
         if (!bs) break;
-        beta *= bs->f.rgb * (abs_dot(bs->wi, hit.ns) / bs->pdf.value);
+        beta *= throughput_weight(bs->f, abs_dot(bs->wi, hit.ns), bs->pdf);
         ray = hit.spawn_ray(bs->wi);
     }
     return l;

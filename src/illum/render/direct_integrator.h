@@ -12,8 +12,8 @@ namespace illum {
 class DirectIntegrator final : public Integrator {
 public:
     DirectIntegrator(const Scene& scene, int max_depth) : Integrator(scene), max_depth_(max_depth) {}
-    Color3 estimate(const Ray& camera_ray, ThreadContext& tc) const override {
-        return radiance(camera_ray, tc).rgb;
+    Radiance3 estimate(const Ray& camera_ray, ThreadContext& tc) const override {
+        return radiance(camera_ray, tc);
     }
     Radiance3 radiance(Ray ray, ThreadContext& tc) const;
 

@@ -17,6 +17,12 @@ bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, Thre
     return !occluded(shadow, tc);
 }
 
+// Adding an integrator: its file, and one line here and in integrator_names().
+const std::vector<std::string>& integrator_names() {
+    static const std::vector<std::string> names = {"path", "direct", "albedo", "normal"};
+    return names;
+}
+
 std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene& scene, int max_depth) {
     if (name == "path") return std::make_unique<PathIntegrator>(scene, max_depth);
     if (name == "direct") return std::make_unique<DirectIntegrator>(scene, max_depth);

@@ -6,11 +6,12 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "illum/geometry/ray.h"
 #include "illum/radiometry/quantity.h"
 #include "illum/render/sampler.h"
-#include "illum/scene/scene.h"
+#include "illum/render/scene.h"
 #include "illum/util/arena.h"
 
 namespace illum {
@@ -27,8 +28,9 @@ class Integrator {
 public:
     explicit Integrator(const Scene& scene) : scene_(scene) {}
     virtual ~Integrator() = default;
-    // The value the film records for this camera ray (radiance in W m^-2 sr^-1 for physical integrators).
-    virtual Color3 estimate(const Ray& camera_ray, ThreadContext& tc) const = 0;
+    // The value the film records for this camera ray: the radiance [W m^-2 sr^-1] arriving along it for the
+    // physical integrators (a debug pass stores its own value in the radiance channels, aov_integrator.h).
+    virtual Radiance3 estimate(const Ray& camera_ray, ThreadContext& tc) const = 0;
     // Whether estimates may be negative (a signed debug pass); radiance never is, so a negative radiance
     // estimate is a numerical failure that the render loop drops and counts.
     virtual bool signed_values() const { return false; }
@@ -48,14 +50,8 @@ protected:
     const Scene& scene_;
 };
 
-// The power heuristic with β = 2 (Veach 1997, §9.2.4): w_a = p_a² / (p_a² + p_b²), for one sample from
-// each strategy.
-inline float power_heuristic(float pdf_a, float pdf_b) {
-    float a = pdf_a * pdf_a, b = pdf_b * pdf_b;
-    if (std::isinf(a)) return 1;
-    return a + b > 0 ? a / (a + b) : 0.0f;
-}
-
+// The names make_integrator knows (scene files and --integrator may use each).
+const std::vector<std::string>& integrator_names();
 // Integrator by name: "path", "direct", "albedo", "normal". Throws illum::Error for another name.
 std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene& scene, int max_depth);
 

@@ -9,14 +9,14 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
     Color3 beta(1.0f);   // path throughput
     float eta_scale = 1; // radiance scaling by refraction, undone for Russian roulette
     bool specular_bounce = false;
-    float prev_bsdf_pdf = 0; // solid-angle pdf of the BSDF sample that made `ray`
+    SolidAnglePdf prev_bsdf_pdf; // of the BSDF sample that made `ray`
     // A stochastic (layered) BSDF's sample carries no usable density: MIS weighs it with pdf() instead,
     // evaluated only when the ray finds emission (a pdf() costs a random walk).
     BSDF prev_bsdf;
     Vector3f prev_wo, prev_wi;
     auto bsdf_pdf_for_mis = [&] {
         if (prev_bsdf) {
-            prev_bsdf_pdf = prev_bsdf.pdf(prev_wo, prev_wi).value;
+            prev_bsdf_pdf = prev_bsdf.pdf(prev_wo, prev_wi);
             prev_bsdf = BSDF();
         }
         return prev_bsdf_pdf;
@@ -33,8 +33,9 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
                 if (depth == 0 || specular_bounce) {
                     l += le * beta;
                 } else {
-                    float p_light =
-                        scene_.light_sampler.pmf(env) * env->pdf_li(prev_ctx, ray.d, nullptr).value;
+                    // Next-event estimation's density for this direction: pick the light, then sample it.
+                    SolidAnglePdf p_light =
+                        scene_.light_sampler.pmf(env) * env->pdf_li(prev_ctx, ray.d, nullptr);
                     l += le * beta * power_heuristic(bsdf_pdf_for_mis(), p_light);
                 }
             }
@@ -47,8 +48,8 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
                 if (depth == 0 || specular_bounce) {
                     l += le * beta;
                 } else {
-                    float p_light = scene_.light_sampler.pmf(hit.area_light) *
-                                    hit.area_light->pdf_li(prev_ctx, ray.d, &hit).value;
+                    SolidAnglePdf p_light = scene_.light_sampler.pmf(hit.area_light) *
+                                            hit.area_light->pdf_li(prev_ctx, ray.d, &hit);
                     l += le * beta * power_heuristic(bsdf_pdf_for_mis(), p_light);
                 }
             }
@@ -86,8 +87,8 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
                         if (is_delta(light->type())) {
                             l += contrib / pmf;
                         } else {
-                            float p_bsdf = bsdf.pdf(wo, ls->wi).value;
-                            l += contrib * (power_heuristic(pmf * ls->pdf.value, p_bsdf) / pmf);
+                            SolidAnglePdf p_bsdf = bsdf.pdf(wo, ls->wi);
+                            l += contrib * (power_heuristic(pmf * ls->pdf, p_bsdf) / pmf);
                         }
                     }
                 }
@@ -99,9 +100,9 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         Point2f u_dir = sampler.get_2d();
         auto bs = bsdf.sample(wo, u_lobe, u_dir);
         if (!bs) break;
-        beta *= bs->f.rgb * (abs_dot(bs->wi, hit.ns) / bs->pdf.value);
+        beta *= throughput_weight(bs->f, abs_dot(bs->wi, hit.ns), bs->pdf); // β f |cos θ| / p
         specular_bounce = bs->is_specular();
-        prev_bsdf_pdf = bs->pdf.value;
+        prev_bsdf_pdf = bs->pdf;
         if (bs->pdf_is_proportional && !specular_bounce) {
             // A stochastic (layered) BSDF: its sample's pdf is not the density that pdf() returns, but MIS
             // stays unbiased as long as both strategies weigh with the same functions, so a light hit by

@@ -12,8 +12,8 @@ class PathIntegrator final : public Integrator {
 public:
     // max_depth: the number of scattering events (0 shows emitters only); negative for unbounded.
     PathIntegrator(const Scene& scene, int max_depth) : Integrator(scene), max_depth_(max_depth) {}
-    Color3 estimate(const Ray& camera_ray, ThreadContext& tc) const override {
-        return radiance(camera_ray, tc).rgb;
+    Radiance3 estimate(const Ray& camera_ray, ThreadContext& tc) const override {
+        return radiance(camera_ray, tc);
     }
     Radiance3 radiance(Ray ray, ThreadContext& tc) const;
 

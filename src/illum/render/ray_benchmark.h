@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "illum/render/renderer.h"
-#include "illum/scene/scene.h"
+#include "illum/render/scene.h"
 
 namespace illum {
 

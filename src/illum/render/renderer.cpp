@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "illum/camera/film.h"
-#include "illum/render/progress.h"
+#include "illum/util/progress.h"
 #include "illum/util/error.h"
 
 namespace illum {
@@ -65,11 +65,11 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                 FilterSample fs = scene.filter->sample(tc.sampler.get_pixel_2d());
                                 Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
                                 Ray ray = scene.camera->generate_ray(p_film, tc.sampler.get_2d());
-                                Color3 v = integrator.estimate(ray, tc);
+                                Radiance3 v = integrator.estimate(ray, tc);
                                 tc.arena.reset();
                                 if (!v.is_finite() || (reject_negative && v.has_negative())) {
                                     ++nonfinite;
-                                    v = Color3(0.0f);
+                                    v = Radiance3(0.0f);
                                 }
                                 film.add_sample(x, y, v, fs.weight);
                             }

@@ -8,7 +8,7 @@
 
 #include "illum/image/image.h"
 #include "illum/render/integrator.h"
-#include "illum/scene/scene.h"
+#include "illum/render/scene.h"
 
 namespace illum {
 

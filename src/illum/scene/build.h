@@ -3,7 +3,7 @@
 
 #include <memory>
 
-#include "illum/scene/scene.h"
+#include "illum/render/scene.h"
 #include "illum/scene/scene_desc.h"
 
 namespace illum {

@@ -13,7 +13,7 @@ namespace illum {
 // pbrt-v4's "uv" mapping: (s, t) = (uscale u + udelta, vscale v + vdelta).
 struct UVMapping {
     float su = 1, sv = 1, du = 0, dv = 0;
-    Point2f map(const SurfaceHit& hit) const { return {su * hit.uv.x + du, sv * hit.uv.y + dv}; }
+    Point2f map(const TextureEvalContext& hit) const { return {su * hit.uv.x + du, sv * hit.uv.y + dv}; }
 };
 
 enum class WrapMode { Repeat, Clamp, Black };
@@ -64,7 +64,7 @@ private:
 class ImageColorTexture final : public ColorTexture {
 public:
     ImageColorTexture(ImageTextureData data, UVMapping m) : data_(std::move(data)), m_(m) {}
-    Color3 evaluate(const SurfaceHit& hit) const override { return data_.lookup(m_.map(hit)); }
+    Color3 evaluate(const TextureEvalContext& hit) const override { return data_.lookup(m_.map(hit)); }
 
 private:
     ImageTextureData data_;
@@ -74,7 +74,7 @@ private:
 class ImageFloatTexture final : public FloatTexture {
 public:
     ImageFloatTexture(ImageTextureData data, UVMapping m) : data_(std::move(data)), m_(m) {}
-    float evaluate(const SurfaceHit& hit) const override { return data_.lookup(m_.map(hit)).average(); }
+    float evaluate(const TextureEvalContext& hit) const override { return data_.lookup(m_.map(hit)).average(); }
 
 private:
     ImageTextureData data_;
@@ -86,7 +86,7 @@ template <class Base, class Value>
 class Checkerboard2D final : public Base {
 public:
     Checkerboard2D(const Base* a, const Base* b, UVMapping m) : a_(a), b_(b), m_(m) {}
-    Value evaluate(const SurfaceHit& hit) const override {
+    Value evaluate(const TextureEvalContext& hit) const override {
         Point2f st = m_.map(hit);
         long parity = long(std::floor(st.x)) + long(std::floor(st.y));
         return (parity & 1) == 0 ? a_->evaluate(hit) : b_->evaluate(hit);
@@ -102,7 +102,7 @@ template <class Base, class Value>
 class ScaleTex final : public Base {
 public:
     ScaleTex(const Base* t, const FloatTexture* s) : t_(t), s_(s) {}
-    Value evaluate(const SurfaceHit& hit) const override {
+    Value evaluate(const TextureEvalContext& hit) const override {
         float s = s_->evaluate(hit);
         return s == 0 ? Value(0.0f) : t_->evaluate(hit) * s;
     }
@@ -117,7 +117,7 @@ template <class Base, class Value>
 class MixTex final : public Base {
 public:
     MixTex(const Base* a, const Base* b, const FloatTexture* amount) : a_(a), b_(b), amount_(amount) {}
-    Value evaluate(const SurfaceHit& hit) const override {
+    Value evaluate(const TextureEvalContext& hit) const override {
         float t = amount_->evaluate(hit);
         Value r = Value(0.0f);
         if (t != 1) r = r + a_->evaluate(hit) * (1 - t);

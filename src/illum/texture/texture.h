@@ -1,28 +1,39 @@
 // Textures give a material parameter at a surface point. Constant and checkerboard here; image textures
-// come with the image module.
+// come with the image module. Textures sit below geometry (the accelerator evaluates alpha cut-outs), so
+// they see a point through TextureEvalContext, which a SurfaceHit is (as pbrt-v4's TextureEvalContext is
+// made from a SurfaceInteraction).
 #pragma once
 
-#include "illum/geometry/surface_hit.h"
+#include <cmath>
+
+#include "illum/math/vector.h"
 #include "illum/radiometry/color.h"
 
 namespace illum {
 
+// What a texture may depend on at a surface point.
+struct TextureEvalContext {
+    Point3f p;
+    Normal3f n; // geometric normal, on the side the shape's orientation says is outside
+    Point2f uv;
+};
+
 class ColorTexture {
 public:
     virtual ~ColorTexture() = default;
-    virtual Color3 evaluate(const SurfaceHit& hit) const = 0;
+    virtual Color3 evaluate(const TextureEvalContext& hit) const = 0;
 };
 
 class FloatTexture {
 public:
     virtual ~FloatTexture() = default;
-    virtual float evaluate(const SurfaceHit& hit) const = 0;
+    virtual float evaluate(const TextureEvalContext& hit) const = 0;
 };
 
 class ConstantColorTexture final : public ColorTexture {
 public:
     explicit ConstantColorTexture(Color3 c) : value_(c) {}
-    Color3 evaluate(const SurfaceHit&) const override { return value_; }
+    Color3 evaluate(const TextureEvalContext&) const override { return value_; }
     Color3 value() const { return value_; }
 
 private:
@@ -32,7 +43,7 @@ private:
 class ConstantFloatTexture final : public FloatTexture {
 public:
     explicit ConstantFloatTexture(float v) : value_(v) {}
-    float evaluate(const SurfaceHit&) const override { return value_; }
+    float evaluate(const TextureEvalContext&) const override { return value_; }
 
 private:
     float value_;
@@ -43,7 +54,7 @@ class CheckerboardColorTexture final : public ColorTexture {
 public:
     CheckerboardColorTexture(const ColorTexture* a, const ColorTexture* b, float su, float sv)
         : a_(a), b_(b), su_(su), sv_(sv) {}
-    Color3 evaluate(const SurfaceHit& hit) const override {
+    Color3 evaluate(const TextureEvalContext& hit) const override {
         int parity = int(std::floor(hit.uv.x * su_) + std::floor(hit.uv.y * sv_)) & 1;
         return parity == 0 ? a_->evaluate(hit) : b_->evaluate(hit);
     }

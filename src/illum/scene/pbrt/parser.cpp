@@ -1,7 +1,9 @@
 #include "illum/scene/pbrt/parser.h"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
 #include <limits>
@@ -9,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string_view>
+#include <sys/stat.h>
 
 #include "illum/scene/pbrt/tokenizer.h"
 
@@ -20,19 +23,30 @@ namespace fs = std::filesystem;
 
 constexpr int kMaxIncludeDepth = 64;
 
-// Reads a regular file whole; nullopt when it cannot be read (missing, a directory, a device...).
-std::optional<std::string> read_text_file(const std::string& path) {
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) return std::nullopt;
+// Reads a regular file whole; nullopt when it cannot be read, with `why` the operating system's reason
+// (or "not a regular file" for a device or FIFO, which might never end).
+std::optional<std::string> read_text_file(const std::string& path, std::string& why) {
     std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) return std::nullopt;
+    if (!f) {
+        why = std::strerror(errno);
+        return std::nullopt;
+    }
+    struct stat st {};
+    if (::fstat(::fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
+        why = S_ISDIR(st.st_mode) ? std::strerror(EISDIR) : "not a regular file";
+        std::fclose(f);
+        return std::nullopt;
+    }
     std::string text;
     char buf[1 << 16];
     size_t n;
     while ((n = std::fread(buf, 1, sizeof(buf), f)) > 0) text.append(buf, n);
-    bool bad = std::ferror(f);
+    if (std::ferror(f)) {
+        why = std::strerror(errno);
+        std::fclose(f);
+        return std::nullopt;
+    }
     std::fclose(f);
-    if (bad) return std::nullopt;
     return text;
 }
 
@@ -84,7 +98,7 @@ const char* push_name(char kind) {
 
 class Parser {
 public:
-    explicit Parser(SceneDesc& scene) : sc_(scene) {}
+    Parser(SceneDesc& scene, const ParseOptions& options) : sc_(scene), options_(options) {}
 
     void run(std::string text, const std::string& filename, const std::string& dir,
              const std::string& canon) {
@@ -94,6 +108,9 @@ public:
             FileFrame& f = *files_.back();
             Token t = f.tok.next();
             if (t.kind == TokenKind::End) {
+                // An included file may hold any part of a scene, but the scene as a whole needs its world:
+                // without WorldBegin nothing would be rendered, and pbrt-v4 stops here too.
+                if (files_.size() == 1 && !in_world_) f.tok.fail(t, "End of files before WorldBegin");
                 files_.pop_back();
                 continue;
             }
@@ -113,7 +130,10 @@ private:
         return std::string(s);
     }
 
+    // A recognised feature that illum does not support (or ignores): one warning, or an error under --strict
+    // worded as the builder's (build.cpp), so both kinds read alike.
     void warn(const SourceLocation& loc, const std::string& message) {
+        if (options_.strict) throw Error(loc, message + " (unsupported; --strict)");
         sc_.warnings.push_back(loc.to_string() + ": " + message);
     }
 
@@ -336,9 +356,15 @@ private:
         case ParamType::Texture:
             if (first_num) wrong_kind(first_num, "quoted strings", "number");
             if (first_bool) wrong_kind(first_bool, "quoted strings", "bool");
+            // File names resolve here, once, against the folder of the file that names them (the builder
+            // and the create functions never join folders again): pbrt-v4's "filename", "normalmap" and
+            // "lensfile", and the "file" of illum's measured "merl" material (but for its built-in
+            // "synthetic:ALPHA" tables).
             if (resolve_files && p.type == ParamType::String &&
-                (p.name == "filename" || p.name == "normalmap"))
-                for (auto& str : strs) str = resolve_path(f.dir, str);
+                (p.name == "filename" || p.name == "normalmap" || p.name == "lensfile" || p.name == "file"))
+                for (auto& str : strs)
+                    if (!(p.name == "file" && str.rfind("synthetic:", 0) == 0))
+                        str = resolve_path(f.dir, str);
             break;
         case ParamType::Spectrum:
             if (first_bool) wrong_kind(first_bool, "numbers or a quoted name", "bool");
@@ -769,8 +795,9 @@ private:
                 f.tok.fail(nt, fmt::format("include cycle: {}", chain));
             }
         }
-        auto text = read_text_file(path);
-        if (!text) f.tok.fail(nt, fmt::format("cannot open included file \"{}\" ({})", name, path));
+        std::string why;
+        auto text = read_text_file(path, why);
+        if (!text) f.tok.fail(nt, fmt::format("cannot open included file \"{}\" ({}): {}", name, path, why));
         files_.push_back(std::make_unique<FileFrame>(
             FileFrame{Tokenizer(std::move(*text), path), directory_of(path), canon}));
     }
@@ -796,6 +823,7 @@ private:
     enum class Active { All, Start, End };
 
     SceneDesc& sc_;
+    ParseOptions options_;
     std::vector<std::unique_ptr<FileFrame>> files_;
     GraphicsState gs_;
     std::vector<PushEntry> stack_;
@@ -811,23 +839,24 @@ private:
 
 } // namespace
 
-SceneDesc parse_pbrt_file(const std::string& path) {
-    auto text = read_text_file(path);
-    if (!text) throw Error(SourceLocation{path, 0, 0}, "cannot open scene file");
+SceneDesc parse_pbrt_file(const std::string& path, const ParseOptions& options) {
+    std::string why;
+    auto text = read_text_file(path, why);
+    if (!text) throw Error(SourceLocation{path, 0, 0}, "cannot open scene file: " + why);
     SceneDesc sc;
     sc.filename = path;
     sc.base_dir = directory_of(path);
-    Parser(sc).run(std::move(*text), path, sc.base_dir, canonical_path(path));
+    Parser(sc, options).run(std::move(*text), path, sc.base_dir, canonical_path(path));
     return sc;
 }
 
 SceneDesc parse_pbrt_string(const std::string& text, const std::string& virtual_filename,
-                            const std::string& base_dir) {
+                            const std::string& base_dir, const ParseOptions& options) {
     SceneDesc sc;
     sc.filename = virtual_filename;
     sc.base_dir = base_dir;
-    Parser(sc).run(text, virtual_filename, base_dir,
-                   canonical_path(resolve_path(base_dir, virtual_filename)));
+    Parser(sc, options)
+        .run(text, virtual_filename, base_dir, canonical_path(resolve_path(base_dir, virtual_filename)));
     return sc;
 }
 

@@ -14,6 +14,8 @@
 //    records the CTM at the use as world_from_instance: a shape of an instance is placed at
 //    world_from_instance * world_from_object;
 //  - NamedMaterial and ObjectInstance may name things defined later in the file (checked at the end);
+//  - a scene must reach WorldBegin (possibly in an included file): one that ends before it is an error at
+//    the end of the main file ("End of files before WorldBegin"), so an empty file is not a black image;
 //  - relative file names resolve against the directory of the file that names them: Include/Import, and
 //    string parameters named "filename" (and a material's "normalmap") of shapes, textures, lights,
 //    materials and media (the Film's output "filename" is left as written); a "spectrum" string that
@@ -29,12 +31,18 @@
 
 namespace illum {
 
+struct ParseOptions {
+    // The parser's warnings (SceneDesc::warnings) are errors instead: the first throws illum::Error at its
+    // position. The CLI's --strict sets it, as it sets BuildOptions::strict for the builder's warnings.
+    bool strict = false;
+};
+
 // Parses a scene file; SceneDesc::base_dir is the file's directory.
-SceneDesc parse_pbrt_file(const std::string& path);
+SceneDesc parse_pbrt_file(const std::string& path, const ParseOptions& options = {});
 
 // Parses scene text held in memory; `virtual_filename` names it in errors and `base_dir` is where its
 // relative file names (Include, "filename" parameters) resolve.
 SceneDesc parse_pbrt_string(const std::string& text, const std::string& virtual_filename,
-                            const std::string& base_dir);
+                            const std::string& base_dir, const ParseOptions& options = {});
 
 } // namespace illum

@@ -1,4 +1,4 @@
-#include "illum/scene/param_set.h"
+#include "illum/param/param_set.h"
 
 #include <cmath>
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-#include "illum/scene/scene.h"
+#include "illum/render/scene.h"
 
 namespace illum {
 

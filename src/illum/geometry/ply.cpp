@@ -1,16 +1,17 @@
-#include "illum/scene/pbrt/ply.h"
+#include "illum/geometry/ply.h"
 
 #include <algorithm>
 #include <bit>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fmt/format.h>
 #include <limits>
 #include <string_view>
+#include <sys/stat.h>
 #include <zlib.h>
 
 #include "illum/util/error.h"
@@ -187,31 +188,49 @@ std::vector<std::string_view> split_words(std::string_view line) {
     return w;
 }
 
-bool read_file(const std::string& path, std::string& out) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return false;
+// "cannot open PLY file: <the operating system's reason>", so a wrong path and a missing permission read
+// differently. errno is read at once, before anything else can change it.
+[[noreturn]] void open_failed(const std::string& path, int err) {
+    throw Error(SourceLocation{path, 0, 0}, fmt::format("cannot open PLY file: {}", std::strerror(err)));
+}
+
+// The file's bytes, gunzipped when it starts with gzip's magic number. Throws illum::Error with the reason.
+void read_file(const std::string& path, std::string& out) {
     std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) return false;
+    if (!f) open_failed(path, errno);
+    struct CloseFile {
+        std::FILE*& f;
+        ~CloseFile() {
+            if (f) std::fclose(f);
+        }
+    } close_file{f};
+    // fopen opens a directory on Linux (reading it then fails with EISDIR): say so at once. Other
+    // non-regular files (a FIFO, /dev/zero) might never end, so they are refused too.
+    struct stat st {};
+    if (::fstat(::fileno(f), &st) != 0) open_failed(path, errno);
+    if (S_ISDIR(st.st_mode)) open_failed(path, EISDIR);
+    if (!S_ISREG(st.st_mode))
+        throw Error(SourceLocation{path, 0, 0}, "cannot open PLY file: not a regular file");
     unsigned char magic[2] = {0, 0};
     size_t m = std::fread(magic, 1, 2, f);
     bool gz = m == 2 && magic[0] == 0x1f && magic[1] == 0x8b;
     if (!gz) {
-        std::fseek(f, 0, SEEK_END);
-        long size = std::ftell(f);
-        std::fseek(f, 0, SEEK_SET);
-        if (size < 0) {
-            std::fclose(f);
-            return false;
+        out.assign(reinterpret_cast<const char*>(magic), m);
+        char buf[1 << 16];
+        size_t n;
+        while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) out.append(buf, n);
+        if (std::ferror(f)) {
+            int err = errno;
+            throw Error(SourceLocation{path, 0, 0},
+                        fmt::format("cannot read PLY file: {}", std::strerror(err)));
         }
-        out.resize(size_t(size));
-        size_t got = size ? std::fread(out.data(), 1, out.size(), f) : 0;
-        std::fclose(f);
-        out.resize(got);
-        return true;
+        return;
     }
     std::fclose(f);
+    f = nullptr;
+    errno = 0;
     gzFile g = gzopen(path.c_str(), "rb");
-    if (!g) return false;
+    if (!g) open_failed(path, errno ? errno : ENOMEM); // zlib leaves errno 0 when it ran out of memory
     gzbuffer(g, 1 << 17);
     out.clear();
     size_t used = 0;
@@ -230,14 +249,13 @@ bool read_file(const std::string& path, std::string& out) {
     }
     gzclose(g);
     out.resize(used);
-    return true;
 }
 
 } // namespace
 
 TriangleMeshData read_ply(const std::string& path) {
     std::string data;
-    if (!read_file(path, data)) throw Error(SourceLocation{path, 0, 0}, "cannot open PLY file");
+    read_file(path, data);
     return parse_ply(data.data(), data.size(), path);
 }
 

@@ -1,4 +1,4 @@
-#include "illum/analysis/albedo.h"
+#include "illum/bsdf/albedo.h"
 
 #include <cmath>
 #include <random>

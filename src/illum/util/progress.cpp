@@ -1,4 +1,4 @@
-#include "illum/render/progress.h"
+#include "illum/util/progress.h"
 
 #include <cstdio>
 #include <fmt/format.h>

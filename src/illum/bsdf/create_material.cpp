@@ -1,0 +1,216 @@
+#include "illum/bsdf/create_material.h"
+
+#include <fmt/format.h>
+
+#include "illum/bsdf/albedo.h"
+#include "illum/bsdf/pbrt_materials.h"
+#include "illum/bsdf/registry.h"
+#include "illum/bsdf/shared_bxdf_material.h"
+#include "illum/bsdf/textured_model_material.h"
+#include "illum/param/spectrum_param.h"
+#include "illum/radiometry/spectra.h"
+
+namespace illum {
+
+namespace {
+
+// pbrt-v4 material names that are a registry model under another name: the model and the map from
+// pbrt-v4's parameter names to the model's (names not listed are the same).
+struct MaterialAlias {
+    const char* pbrt_name;
+    const char* model;
+    std::vector<std::pair<std::string, std::string>> renamed;
+};
+const std::vector<MaterialAlias>& material_aliases() {
+    static const std::vector<MaterialAlias> aliases = {
+        {"diffuse", "lambert", {}},
+    };
+    return aliases;
+}
+
+class MaterialMaker {
+public:
+    MaterialMaker(const EntityDesc& m, MaterialContext& ctx) : m_(m), ctx_(ctx), tex_(ctx.textures) {}
+
+    const Material* make(const std::string& type) {
+        if (type == "conductor") return conductor("");
+        if (type == "dielectric")
+            return own(std::make_unique<DielectricMaterial>(eta_param("eta", 1.5f), roughness()));
+        if (type == "thindielectric")
+            return own(std::make_unique<ThinDielectricMaterial>(eta_param("eta", 1.5f)));
+        if (type == "coateddiffuse")
+            return own(
+                std::make_unique<CoatedDiffuseMaterial>(tex_.color(m_.params, "reflectance", Color3(0.5f)),
+                                                        eta_param("eta", 1.5f), roughness(), layer()));
+        if (type == "coatedconductor") {
+            float ieta = eta_param("interface.eta", 1.5f);
+            RoughnessParams coat = roughness("interface.");
+            const ConductorMaterial* c = conductor("conductor.");
+            return own(
+                std::make_unique<CoatedConductorMaterial>(ieta, coat, c, roughness("conductor."), layer()));
+        }
+        if (type == "diffusetransmission")
+            return own(std::make_unique<DiffuseTransmissionMaterial>(
+                tex_.color(m_.params, "reflectance", Color3(0.25f)),
+                tex_.color(m_.params, "transmittance", Color3(0.25f)), m_.params.get_float("scale", 1)));
+        if (type == "interface") return own(std::make_unique<InterfaceMaterial>());
+        if (type == "mix") return mix();
+        if (type == "measured" || type == "subsurface" || type == "hair") {
+            tex_.diagnostics().unsupported(
+                m_.loc, fmt::format("material \"{}\" is approximated by a grey diffuse one", type));
+            for (const Param& p : m_.params.params()) p.used = true;
+            return own(std::make_unique<DiffuseMaterial>(tex_.constant(Color3(0.5f))));
+        }
+        for (const MaterialAlias& a : material_aliases())
+            if (type == a.pbrt_name) return model(find_bxdf_model(a.model), &a);
+        for (const ModelSpec& spec : bxdf_models())
+            if (spec.name == type) return model(spec, nullptr);
+        throw Error(m_.loc, fmt::format("unknown material type \"{}\"", type));
+    }
+
+private:
+    const Material* own(std::unique_ptr<Material> m) {
+        ctx_.owned.push_back(std::move(m));
+        return ctx_.owned.back().get();
+    }
+
+    int int_param(const char* name, int def, int lo, int hi) {
+        int v = m_.params.get_int(name, def);
+        if (v < lo || v > hi)
+            throw Error(m_.params.find(name)->loc, fmt::format("\"{}\" must be in [{}, {}]", name, lo, hi));
+        return v;
+    }
+
+    // A scalar index of refraction: float, or a spectrum reduced to its value at 550 nm (named glasses)
+    // or the mean of its RGB.
+    float eta_param(const std::string& name, float def) {
+        const Param* p = m_.params.find(name);
+        if (!p) return def;
+        float eta = def;
+        if (p->type == ParamType::Spectrum) {
+            eta = spectrum_param_rgb(*p, SpectrumKind::Unbounded).average();
+            if (!(p->strings.size() == 1 && p->strings[0].rfind("glass-", 0) == 0))
+                tex_.diagnostics().unsupported(
+                    p->loc,
+                    fmt::format("spectrally varying \"{}\" is rendered with its mean {:.4g}", name, eta));
+        } else if (p->type == ParamType::Texture) {
+            p->used = true;
+            tex_.diagnostics().unsupported(p->loc,
+                                           fmt::format("a textured \"{}\" is rendered with {}", name, def));
+        } else {
+            eta = m_.params.get_float(name, def);
+        }
+        if (!(eta > 0 && eta <= 100))
+            throw Error(p->loc, fmt::format("\"{}\" must be in (0, 100], got {}", name, eta));
+        return eta;
+    }
+
+    RoughnessParams roughness(const std::string& prefix = "") {
+        RoughnessParams r;
+        const FloatTexture* both = tex_.scalar(m_.params, prefix + "roughness", 0.0f);
+        r.u =
+            m_.params.has(prefix + "uroughness") ? tex_.scalar(m_.params, prefix + "uroughness", 0.0f) : both;
+        r.v =
+            m_.params.has(prefix + "vroughness") ? tex_.scalar(m_.params, prefix + "vroughness", 0.0f) : both;
+        r.remap = m_.params.get_bool("remaproughness", true);
+        return r;
+    }
+
+    const ConductorMaterial* conductor(const std::string& prefix) {
+        const ColorTexture* refl = tex_.color(m_.params, "reflectance", std::nullopt);
+        const ColorTexture* eta = tex_.color(m_.params, prefix + "eta", std::nullopt);
+        const ColorTexture* k = tex_.color(m_.params, prefix + "k", std::nullopt);
+        if (refl && (eta || k))
+            tex_.diagnostics().unsupported(
+                m_.loc, "conductor with both \"reflectance\" and eta/k uses \"reflectance\"");
+        if (!eta) eta = tex_.constant(*named_spectrum_rgb("metal-Cu-eta"));
+        if (!k) k = tex_.constant(*named_spectrum_rgb("metal-Cu-k"));
+        auto c = std::make_unique<ConductorMaterial>(eta, k, refl, roughness(prefix));
+        const ConductorMaterial* ptr = c.get();
+        own(std::move(c));
+        return ptr;
+    }
+
+    // The layer of a coated material: pbrt-v4's "thickness" (0.01), "albedo" (0), "g" (0), "maxdepth" (10)
+    // and "nsamples" (1).
+    LayerParams layer() {
+        LayerParams l;
+        if (const Param* t = m_.params.find("thickness");
+            t && t->type == ParamType::Float && !(m_.params.get_float("thickness", 0.01f) >= 0))
+            throw Error(t->loc, "\"thickness\" must be non-negative");
+        l.thickness = tex_.scalar(m_.params, "thickness", 0.01f);
+        l.albedo = tex_.color(m_.params, "albedo", Color3(0.0f));
+        l.g = tex_.scalar(m_.params, "g", 0.0f);
+        l.max_depth = int_param("maxdepth", 10, 1, 1000);
+        l.samples = int_param("nsamples", 1, 1, 1000);
+        return l;
+    }
+
+    const Material* mix() {
+        auto names = m_.params.get_strings("materials");
+        if (names.size() != 2)
+            throw Error(m_.params.has("materials") ? m_.params.find("materials")->loc : m_.loc,
+                        "mix needs \"string materials\" with two named materials");
+        const Material* ab[2];
+        for (int i = 0; i < 2; ++i) {
+            auto it = ctx_.named.find(names[i]);
+            if (it == ctx_.named.end())
+                throw Error(m_.params.find("materials")->loc,
+                            fmt::format("undefined named material \"{}\"", names[i]));
+            ab[i] = it->second;
+        }
+        return own(std::make_unique<MixMaterial>(ab[0], ab[1], tex_.scalar(m_.params, "amount", 0.5f)));
+    }
+
+    // A registry model, e.g. Material "ward" "rgb rho_d" [0.2 0.1 0.05] "texture rho_s" "tex", or a pbrt-v4
+    // alias of one. Constant parameters: one BxDF built now and shared by every hit. Textured ones: the
+    // model is placed in the arena per hit from the slots resolved here.
+    const Material* model(const ModelSpec& spec, const MaterialAlias* alias) {
+        ParamSet renamed;
+        const ParamSet* params = &m_.params;
+        if (alias && !alias->renamed.empty()) {
+            for (const Param& p : m_.params.params()) {
+                Param q = p;
+                for (const auto& [from, to] : alias->renamed)
+                    if (p.name == from) q.name = to;
+                p.used = true;
+                renamed.add(std::move(q));
+            }
+            params = &renamed;
+        }
+        ParamValues values;
+        try {
+            values = resolve_params(spec, *params, &tex_, alias != nullptr);
+        } catch (const Error& e) {
+            if (!e.where().file.empty()) throw;
+            throw Error(m_.loc, e.what());
+        }
+        bool textured = false;
+        for (const ModelArg& a : values.args) textured = textured || a.color || a.scalar;
+        std::unique_ptr<BxDF> bxdf;
+        try {
+            bxdf = spec.make(values); // textured parameters at their defaults
+        } catch (const Error& e) {
+            throw Error(m_.loc, e.what());
+        }
+        // The albedo pass shows the directional albedo at normal incidence.
+        AlbedoEstimate a = directional_albedo(*bxdf, {0, 0, 1}, spec.delta, 16, 4096, 1);
+        Color3 albedo(float(a.mc[0]), float(a.mc[1]), float(a.mc[2]));
+        if (!textured) return own(std::make_unique<SharedBxDFMaterial>(std::move(bxdf), albedo));
+        if (!spec.factory.place)
+            throw Error(m_.loc, fmt::format("material \"{}\" cannot have textured parameters", spec.name));
+        return own(std::make_unique<TexturedModelMaterial>(spec, std::move(values), albedo));
+    }
+
+    const EntityDesc& m_;
+    MaterialContext& ctx_;
+    TextureParams& tex_;
+};
+
+} // namespace
+
+const Material* create_material(const EntityDesc& m, const std::string& type, MaterialContext& ctx) {
+    return MaterialMaker(m, ctx).make(type);
+}
+
+} // namespace illum

@@ -1,0 +1,28 @@
+// The camera, film and pixel filter of a scene file (pbrt-v4's Camera, Film and PixelFilter directives),
+// each read from its own parameters.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "illum/camera/camera.h"
+#include "illum/camera/filter.h"
+#include "illum/param/entity.h"
+#include "illum/util/diagnostics.h"
+
+namespace illum {
+
+struct FilmSettings {
+    int width = 1280, height = 720;
+    std::string filename; // "" when the film names none
+};
+
+// "rgb" (and "gbuffer", "spectral", rendered as rgb with a warning): xresolution, yresolution, filename.
+FilmSettings create_film(const EntityDesc& film, Diagnostics& diag);
+// "box", "triangle", "gaussian" (xradius, yradius, sigma); "mitchell" and "sinc" as a gaussian, warned.
+std::unique_ptr<Filter> create_filter(const EntityDesc& filter, Diagnostics& diag);
+// "perspective" (fov, lensradius, focaldistance, frameaspectratio, screenwindow) and "orthographic";
+// "realistic" and "spherical" as a perspective camera, warned.
+std::unique_ptr<Camera> create_camera(const CameraDesc& camera, const FilmSettings& film, Diagnostics& diag);
+
+} // namespace illum

@@ -1,0 +1,201 @@
+#include "illum/geometry/create_shape.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+#include "illum/geometry/cylinder.h"
+#include "illum/geometry/disk.h"
+#include "illum/geometry/ply.h"
+#include "illum/geometry/sphere.h"
+
+namespace illum {
+
+namespace {
+
+// Where a shape's parameter was written (the shape's own position when it was not).
+SourceLocation param_loc(const ShapeDesc& s, const char* name) {
+    const Param* p = s.params.find(name);
+    return p ? p->loc : s.loc;
+}
+
+// pbrt-v4's "phimax" in degrees, (0, 360], as radians.
+float phimax_of(const ShapeDesc& s) {
+    float phimax = s.params.get_float("phimax", 360);
+    if (!(phimax > 0 && phimax <= 360))
+        throw Error(param_loc(s, "phimax"),
+                    fmt::format("{} phimax must be in (0, 360], not {}", s.type, phimax));
+    return phimax * (kPi / 180);
+}
+
+// Outward normals flip under ReverseOrientation and under a transform that swaps handedness (pbrt-v4).
+bool flip_of(const ShapeDesc& s) { return s.reverse_orientation != s.world_from_object.swaps_handedness(); }
+
+// Indices of a mesh checked against its vertex count; `per` vertices per face.
+void check_indices(const ShapeDesc& s, const std::vector<int>& idx, std::size_t vertices, int per) {
+    if (idx.size() % per != 0)
+        throw Error(s.params.find("indices")->loc,
+                    fmt::format("{} has {} indices, not a multiple of {}", s.type, idx.size(), per));
+    for (int i : idx)
+        if (i < 0 || std::size_t(i) >= vertices)
+            throw Error(
+                s.params.find("indices")->loc,
+                fmt::format("{} index {} is out of range (the mesh has {} vertices)", s.type, i, vertices));
+}
+
+// Per-vertex normals and uv of a mesh given inline.
+void vertex_data(const ShapeDesc& s, TriangleMesh& mesh) {
+    mesh.n = s.params.get_normals("N");
+    if (!mesh.n.empty() && mesh.n.size() != mesh.p.size())
+        throw Error(s.params.find("N")->loc, fmt::format("{} has a different number of N and P", s.type));
+    mesh.uv = s.params.get_point2s("uv");
+    if (mesh.uv.empty() && s.type == "trianglemesh") mesh.uv = s.params.get_point2s("st");
+    if (!mesh.uv.empty() && mesh.uv.size() != mesh.p.size())
+        throw Error(s.loc, fmt::format("{} has a different number of uv and P", s.type));
+}
+
+std::unique_ptr<TriangleMesh> triangle_mesh(const ShapeDesc& s) {
+    auto mesh = std::make_unique<TriangleMesh>();
+    mesh->p = s.params.get_point3s("P");
+    auto idx = s.params.get_ints("indices");
+    if (mesh->p.empty()) throw Error(s.loc, "trianglemesh needs \"point3 P\"");
+    if (idx.empty()) {
+        if (mesh->p.size() != 3) throw Error(s.loc, "trianglemesh without \"indices\" must have 3 vertices");
+        idx = {0, 1, 2};
+    }
+    check_indices(s, idx, mesh->p.size(), 3);
+    mesh->indices.assign(idx.begin(), idx.end());
+    vertex_data(s, *mesh);
+    return mesh;
+}
+
+// Each bilinear patch (p00, p10, p01, p11) becomes the two triangles (p00, p10, p11) and (p00, p11, p01),
+// whose normals agree with the patch's dp/du x dp/dv: exact for planar patches, a two-triangle
+// approximation of curved ones.
+std::unique_ptr<TriangleMesh> bilinear_mesh(const ShapeDesc& s) {
+    auto mesh = std::make_unique<TriangleMesh>();
+    mesh->p = s.params.get_point3s("P");
+    auto idx = s.params.get_ints("indices");
+    if (mesh->p.empty()) throw Error(s.loc, "bilinearmesh needs \"point3 P\"");
+    if (idx.empty()) {
+        if (mesh->p.size() != 4) throw Error(s.loc, "bilinearmesh without \"indices\" must have 4 vertices");
+        idx = {0, 1, 2, 3};
+    }
+    check_indices(s, idx, mesh->p.size(), 4);
+    for (std::size_t q = 0; q < idx.size(); q += 4) {
+        std::uint32_t a = idx[q], b = idx[q + 1], c = idx[q + 2], d = idx[q + 3];
+        mesh->indices.insert(mesh->indices.end(), {a, b, d, a, d, c});
+    }
+    vertex_data(s, *mesh);
+    if (mesh->uv.empty() && idx.size() == 4 && mesh->p.size() == 4)
+        mesh->uv = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+    return mesh;
+}
+
+std::unique_ptr<TriangleMesh> ply_mesh(const ShapeDesc& s, Diagnostics& diag) {
+    std::string file = s.params.get_string("filename", "");
+    if (file.empty()) throw Error(s.loc, "plymesh needs \"string filename\"");
+    TriangleMeshData data;
+    try {
+        data = read_ply(file);
+    } catch (const Error& e) {
+        diag.missing_file(s.params.find("filename")->loc, e.what());
+        return nullptr;
+    }
+    if (data.indices.empty()) {
+        diag.unsupported(s.loc, fmt::format("plymesh \"{}\" has no triangles and is skipped", file));
+        return nullptr;
+    }
+    if (s.params.has("displacement")) diag.unsupported(s.loc, "plymesh displacement is ignored");
+    auto mesh = std::make_unique<TriangleMesh>();
+    mesh->p = std::move(data.positions);
+    mesh->n = std::move(data.normals);
+    mesh->uv = std::move(data.uvs);
+    mesh->indices.assign(data.indices.begin(), data.indices.end());
+    return mesh;
+}
+
+std::unique_ptr<AnalyticShape> sphere(const ShapeDesc& s) {
+    float r = s.params.get_float("radius", 1);
+    if (!(r > 0)) throw Error(param_loc(s, "radius"), "sphere radius must be positive");
+    float zmin = s.params.get_float("zmin", -r), zmax = s.params.get_float("zmax", r);
+    // pbrt-v4 orders zmin, zmax and clamps them to [-r, r]; an empty range is an error here.
+    float z0 = std::clamp(std::min(zmin, zmax), -r, r), z1 = std::clamp(std::max(zmin, zmax), -r, r);
+    if (!(z0 < z1))
+        throw Error(param_loc(s, s.params.has("zmin") ? "zmin" : "zmax"),
+                    fmt::format("sphere zmin ({}) and zmax ({}) leave nothing of the sphere of radius {}",
+                                zmin, zmax, r));
+    return std::make_unique<SphereShape>(s.world_from_object, r, zmin, zmax, phimax_of(s), flip_of(s));
+}
+
+std::unique_ptr<AnalyticShape> disk(const ShapeDesc& s) {
+    float r = s.params.get_float("radius", 1), ri = s.params.get_float("innerradius", 0);
+    float h = s.params.get_float("height", 0);
+    if (!(r > 0) || !(ri >= 0) || !(ri < r) || !std::isfinite(h))
+        throw Error(s.loc, "disk needs 0 <= innerradius < radius and a finite height");
+    return std::make_unique<DiskShape>(s.world_from_object, h, r, ri, flip_of(s), phimax_of(s));
+}
+
+std::unique_ptr<AnalyticShape> cylinder(const ShapeDesc& s) {
+    float r = s.params.get_float("radius", 1), z0 = s.params.get_float("zmin", -1),
+          z1 = s.params.get_float("zmax", 1);
+    if (!(r > 0)) throw Error(param_loc(s, "radius"), "cylinder radius must be positive");
+    if (!(z0 != z1) || !std::isfinite(z0) || !std::isfinite(z1))
+        throw Error(param_loc(s, s.params.has("zmin") ? "zmin" : "zmax"),
+                    "cylinder needs finite zmin != zmax");
+    return std::make_unique<CylinderShape>(s.world_from_object, r, z0, z1, phimax_of(s), flip_of(s));
+}
+
+// pbrt-v4's "alpha" of a shape, a float or a float texture; nullptr when the shape is opaque.
+const FloatTexture* alpha_of(const ShapeDesc& s, TextureParams& textures) {
+    const Param* a = s.params.find("alpha");
+    if (!a) return nullptr;
+    if (a->type == ParamType::Float && s.params.get_float("alpha", 1) >= 1) return nullptr;
+    return textures.scalar(s.params, "alpha", 1.0f);
+}
+
+} // namespace
+
+std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& textures) {
+    if (!s.world_from_object.matrix().is_finite()) throw Error(s.loc, "shape transform is not finite");
+    // A constant alpha of 0 removes the shape (pbrt-v4 does the same); any other alpha below 1 is a
+    // cut-out.
+    if (const Param* a = s.params.find("alpha"))
+        if (a->type == ParamType::Float && s.params.get_float("alpha", 1) <= 0) return std::nullopt;
+    ShapeGeometry g;
+    g.alpha = alpha_of(s, textures);
+    if (s.type == "trianglemesh") {
+        g.mesh = triangle_mesh(s);
+    } else if (s.type == "bilinearmesh") {
+        g.mesh = bilinear_mesh(s);
+    } else if (s.type == "plymesh") {
+        g.mesh = ply_mesh(s, textures.diagnostics());
+        if (!g.mesh) return std::nullopt;
+    } else if (s.type == "sphere") {
+        g.analytic = sphere(s);
+    } else if (s.type == "disk") {
+        g.analytic = disk(s);
+    } else if (s.type == "cylinder") {
+        g.analytic = cylinder(s);
+    } else if (s.type == "loopsubdiv" || s.type == "curve" || s.type == "cone" || s.type == "paraboloid" ||
+               s.type == "hyperboloid") {
+        textures.diagnostics().unsupported(
+            s.loc, fmt::format("shape \"{}\" is not supported yet and is skipped", s.type));
+        return std::nullopt;
+    } else {
+        throw Error(s.loc, fmt::format("unknown shape type \"{}\"", s.type));
+    }
+    if (g.mesh) {
+        g.mesh->flip_normal = flip_of(s);
+        g.mesh->transform(s.world_from_object);
+        // pbrt-v4's TriangleMesh negates given normals under ReverseOrientation (not under a handedness
+        // swap); the geometric normal then turns to their side, so the emitting side flips too.
+        if (s.reverse_orientation)
+            for (Normal3f& n : g.mesh->n) n = -n;
+        g.mesh->finalize();
+    } else {
+        g.analytic->set_alpha(g.alpha);
+    }
+    return g;
+}
+
+} // namespace illum

@@ -1,0 +1,26 @@
+// The geometry of a Shape directive: pbrt-v4's trianglemesh, plymesh, bilinearmesh (as triangles), sphere,
+// disk and cylinder, in world space, with its alpha cut-out. The scene builder adds the result to the
+// accelerator and gives it its material and area light.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "illum/geometry/analytic_shape.h"
+#include "illum/geometry/triangle_mesh.h"
+#include "illum/param/entity.h"
+#include "illum/texture/texture_params.h"
+
+namespace illum {
+
+struct ShapeGeometry {
+    std::unique_ptr<TriangleMesh> mesh;      // a mesh, in world space and finalized, or
+    std::unique_ptr<AnalyticShape> analytic; // an analytic shape (its alpha set)
+    const FloatTexture* alpha = nullptr;     // pbrt-v4's "alpha" cut-out; nullptr when opaque
+};
+
+// nullopt when the shape is removed (constant alpha 0), recognised but skipped (warned), or its file
+// cannot be read (recorded in the diagnostics, so every missing file of a scene is reported together).
+std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& textures);
+
+} // namespace illum

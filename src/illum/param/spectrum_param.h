@@ -1,0 +1,20 @@
+// A spectrum-valued parameter ("spectrum L" [...], "blackbody L" [6500], "spectrum eta" "glass-BK7", or a
+// file of (wavelength, value) pairs) reduced to RGB, as the RGB renderer needs it.
+#pragma once
+
+#include "illum/param/param_set.h"
+#include "illum/radiometry/color.h"
+
+namespace illum {
+
+enum class SpectrumKind {
+    Unbounded,  // reflectance, η, k: XYZ of s·D65 normalised by D65's Y
+    Illuminant, // emission: normalised to luminance 1 (pbrt-v4's "scale /= SpectrumToPhotometric")
+};
+
+// Named (pbrt-v4's metal, glass and illuminant names), blackbody (luminance 1), sampled (λ value pairs) or
+// a file of such pairs (its name already resolved against the scene's folder by the parser). Marks the
+// parameter used; throws illum::Error at its position for a bad spectrum or an unreadable file.
+Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind);
+
+} // namespace illum

@@ -1,0 +1,54 @@
+#include "illum/render/create_render_request.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+#include "illum/render/integrator.h"
+
+namespace illum {
+
+RenderRequest create_render_request(const EntityDesc& in, const EntityDesc& s, Diagnostics& diag) {
+    RenderRequest r;
+    r.max_depth = in.params.get_int("maxdepth", 5);
+    if (r.max_depth < -1) throw Error(in.loc, "maxdepth must be -1 (unbounded) or non-negative");
+    const std::string& t = in.type;
+    const auto& ours = integrator_names();
+    if (std::find(ours.begin(), ours.end(), t) != ours.end()) {
+        r.integrator = t;
+    } else if (t == "simplepath" || t == "volpath") {
+        r.integrator = "path"; // volpath: surfaces only; media are reported where they are declared
+    } else if (t == "directlighting") {
+        r.integrator = "direct"; // pbrt-v3's name for it
+    } else if (t == "bdpt" || t == "mlt" || t == "sppm" || t == "lightpath" || t == "randomwalk" ||
+               t == "simplevolpath" || t == "ambientocclusion" || t == "aov") {
+        diag.unsupported(in.loc, fmt::format("integrator \"{}\" is rendered with \"path\"", t));
+        r.integrator = "path";
+        for (const Param& p : in.params.params()) p.used = true; // its own parameters are not ours to judge
+    } else {
+        throw Error(in.loc, fmt::format("unknown integrator \"{}\"", t));
+    }
+    if (in.params.get_bool("regularize", false))
+        diag.unsupported(in.params.find("regularize")->loc,
+                         "\"regularize\" is not supported; rendered without");
+    if (const Param* ls = in.params.find("lightsampler")) {
+        std::string name = in.params.get_string("lightsampler", "bvh");
+        if (name != "power")
+            diag.unsupported(ls->loc, fmt::format("light sampler \"{}\" is replaced by \"power\"", name));
+    }
+
+    r.spp = s.params.get_int("pixelsamples", 16);
+    if (r.spp <= 0) throw Error(s.loc, "pixelsamples must be positive");
+    if (s.type == "independent")
+        r.sampler = "independent";
+    else if (s.type == "sobol" || s.type == "zsobol" || s.type == "paddedsobol")
+        r.sampler = "sobol";
+    else if (s.type == "halton" || s.type == "pmj02bn" || s.type == "stratified") {
+        diag.unsupported(s.loc, fmt::format("sampler \"{}\" is replaced by \"sobol\"", s.type));
+        r.sampler = "sobol";
+    } else {
+        throw Error(s.loc, fmt::format("unknown sampler \"{}\"", s.type));
+    }
+    return r;
+}
+
+} // namespace illum

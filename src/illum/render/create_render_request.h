@@ -1,0 +1,20 @@
+// What the scene file's Integrator and Sampler directives ask of the render, read from their own
+// parameters beside the integrators and samplers that use them.
+#pragma once
+
+#include "illum/param/entity.h"
+#include "illum/render/scene.h"
+#include "illum/util/diagnostics.h"
+
+namespace illum {
+
+// Integrator: pbrt-v4's "path", "volpath" (surfaces only until media land), "simplepath", illum's
+// "direct" (pbrt-v3's "directlighting"), "albedo", "normal"; "maxdepth" (5), "regularize" (false; true is
+// warned), "lightsampler" ("bvh" in pbrt-v4; illum samples lights by power, warned when another is named).
+// The other pbrt-v4 integrators render with "path", warned. Sampler: "pixelsamples" (16); zsobol, sobol
+// and paddedsobol are illum's Owen-scrambled Sobol, "independent" is independent, the others are replaced
+// by Sobol, warned.
+RenderRequest create_render_request(const EntityDesc& integrator, const EntityDesc& sampler,
+                                    Diagnostics& diag);
+
+} // namespace illum

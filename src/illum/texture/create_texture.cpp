@@ -1,0 +1,161 @@
+// pbrt-v4's Texture directive: "float" or "spectrum" textures of type constant, scale, mix, checkerboard
+// (2D) and imagemap; the procedural ones are recognised and approximated by a constant, with a warning.
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "illum/image/image_io.h"
+#include "illum/texture/pbrt_textures.h"
+#include "illum/texture/texture_params.h"
+
+namespace illum {
+
+namespace {
+
+UVMapping mapping(const TextureDesc& t, Diagnostics& diag) {
+    std::string m = t.params.get_string("mapping", "uv");
+    if (m != "uv") diag.unsupported(t.loc, fmt::format("texture mapping \"{}\" is replaced by \"uv\"", m));
+    return {t.params.get_float("uscale", 1), t.params.get_float("vscale", 1), t.params.get_float("udelta", 0),
+            t.params.get_float("vdelta", 0)};
+}
+
+bool is_eight_bit(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (auto& ch : ext) ch = char(std::tolower(ch));
+    return ext != ".exr" && ext != ".pfm" && ext != ".hdr";
+}
+
+// The image of an imagemap, decoded as `encoding` says: read_image gives 8-bit files as sRGB-decoded
+// linear values; "linear" asks for the raw values, "gamma g" for v^g. The file name was resolved against
+// the scene's folder by the parser. nullptr (recorded in the diagnostics) when it cannot be read.
+std::shared_ptr<const Image> load_image(const TextureDesc& t, const std::string& encoding,
+                                        TextureParams& params) {
+    const Param* f = t.params.find("filename");
+    std::string path = t.params.get_string("filename", "");
+    if (path.empty()) throw Error(t.loc, "imagemap needs \"string filename\"");
+    if (is_eight_bit(path) && encoding != "sRGB" && encoding != "linear" && encoding.rfind("gamma ", 0) != 0)
+        throw Error(t.params.find("encoding")->loc, fmt::format("unknown image encoding \"{}\"", encoding));
+    std::string key = path + "|" + encoding;
+    if (auto it = params.images().find(key); it != params.images().end()) return it->second;
+    Image img;
+    try {
+        img = read_image(path);
+    } catch (const Error& err) {
+        params.diagnostics().missing_file(f->loc, err.what());
+        return nullptr;
+    }
+    if (is_eight_bit(path) && encoding != "sRGB") {
+        float gamma = 1;
+        if (encoding != "linear") {
+            char* end = nullptr;
+            gamma = std::strtof(encoding.c_str() + 6, &end);
+            if (*end != '\0' || !(gamma > 0) || !std::isfinite(gamma))
+                throw Error(t.params.find("encoding")->loc,
+                            fmt::format("bad image encoding \"{}\"", encoding));
+        }
+        for (std::size_t i = 0; i < img.pixel_count(); ++i) {
+            Color3& c = img.data()[i];
+            for (int k = 0; k < 3; ++k) {
+                float v = c[k];
+                float enc = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1 / 2.4f) - 0.055f;
+                c[k] = gamma == 1 ? enc : std::pow(enc, gamma);
+            }
+        }
+    }
+    auto ptr = std::make_shared<const Image>(std::move(img));
+    params.images()[key] = ptr;
+    return ptr;
+}
+
+} // namespace
+
+void create_texture(const TextureDesc& t, TextureParams& params) {
+    bool is_float = t.value_type == "float";
+    if (!is_float && t.value_type != "spectrum")
+        throw Error(t.loc,
+                    fmt::format("texture type must be \"float\" or \"spectrum\", not \"{}\"", t.value_type));
+    Diagnostics& diag = params.diagnostics();
+    const ColorTexture* ct = nullptr;
+    const FloatTexture* ft = nullptr;
+    auto f = [&](const char* n, float d) { return params.scalar(t.params, n, d); };
+    auto c = [&](const char* n, Color3 d) { return params.color(t.params, n, d); };
+    if (t.type == "constant") {
+        if (is_float)
+            ft = f("value", 1);
+        else
+            ct = c("value", Color3(1.0f));
+    } else if (t.type == "scale") {
+        const FloatTexture* s = f("scale", 1);
+        if (is_float)
+            ft = params.own(std::make_unique<ScaleTex<FloatTexture, float>>(f("tex", 1), s));
+        else
+            ct = params.own(std::make_unique<ScaleTex<ColorTexture, Color3>>(c("tex", Color3(1.0f)), s));
+    } else if (t.type == "mix") {
+        const FloatTexture* a = f("amount", 0.5f);
+        if (is_float)
+            ft = params.own(std::make_unique<MixTex<FloatTexture, float>>(f("tex1", 0), f("tex2", 1), a));
+        else
+            ct = params.own(std::make_unique<MixTex<ColorTexture, Color3>>(c("tex1", Color3(0.0f)),
+                                                                           c("tex2", Color3(1.0f)), a));
+    } else if (t.type == "checkerboard") {
+        int dim = t.params.get_int("dimension", 2);
+        if (dim != 2) diag.unsupported(t.loc, "a 3D checkerboard is rendered as a 2D one");
+        UVMapping m = mapping(t, diag);
+        if (is_float)
+            ft = params.own(
+                std::make_unique<Checkerboard2D<FloatTexture, float>>(f("tex1", 1), f("tex2", 0), m));
+        else
+            ct = params.own(std::make_unique<Checkerboard2D<ColorTexture, Color3>>(
+                c("tex1", Color3(1.0f)), c("tex2", Color3(0.0f)), m));
+    } else if (t.type == "imagemap") {
+        std::string enc = t.params.get_string(
+            "encoding", is_eight_bit(t.params.get_string("filename", "")) ? "sRGB" : "linear");
+        std::string wrap = t.params.get_string("wrap", "repeat");
+        WrapMode w = WrapMode::Repeat;
+        if (wrap == "clamp")
+            w = WrapMode::Clamp;
+        else if (wrap == "black")
+            w = WrapMode::Black;
+        else if (wrap == "octahedralsphere")
+            diag.unsupported(t.loc, "wrap \"octahedralsphere\" is replaced by \"repeat\"");
+        else if (wrap != "repeat")
+            throw Error(t.params.find("wrap")->loc, fmt::format("unknown wrap mode \"{}\"", wrap));
+        std::string filter = t.params.get_string("filter", "bilinear");
+        if (filter != "bilinear" && filter != "point" && filter != "trilinear" && filter != "ewa")
+            throw Error(t.params.find("filter")->loc, fmt::format("unknown texture filter \"{}\"", filter));
+        t.params.get_float("maxanisotropy", 8);
+        float scale = t.params.get_float("scale", 1);
+        bool invert = t.params.get_bool("invert", false);
+        UVMapping m = mapping(t, diag);
+        if (auto image = load_image(t, enc, params)) {
+            ImageTextureData data(std::move(image), w, scale, invert);
+            if (is_float)
+                ft = params.own(std::make_unique<ImageFloatTexture>(data, m));
+            else
+                ct = params.own(std::make_unique<ImageColorTexture>(data, m));
+        } else if (is_float) { // the build fails with every missing file listed; go on to find the others
+            ft = params.constant(0.0f);
+        } else {
+            ct = params.constant(Color3(0.0f));
+        }
+    } else if (t.type == "bilerp" || t.type == "directionmix" || t.type == "dots" || t.type == "fbm" ||
+               t.type == "marble" || t.type == "ptex" || t.type == "windy" || t.type == "wrinkled") {
+        diag.unsupported(t.loc, fmt::format("texture \"{}\" is approximated by a constant 0.5", t.type));
+        if (is_float)
+            ft = params.constant(0.5f);
+        else
+            ct = params.constant(Color3(0.5f));
+    } else {
+        throw Error(t.loc, fmt::format("unknown texture type \"{}\"", t.type));
+    }
+    if (is_float)
+        params.define(t.name, ft);
+    else
+        params.define(t.name, ct);
+}
+
+} // namespace illum
