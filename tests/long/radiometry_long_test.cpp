@@ -28,8 +28,8 @@ double expect_radiance(const RenderResult& r, double expected, const std::string
         auto m = pixel_mean(r.image, c);
         double tol = kSigmas * m.standard_error + rel_float * expected;
         widest = std::max(widest, tol);
-        EXPECT_NEAR(m.mean, expected, tol) << what << " channel " << c << " (standard error "
-                                           << m.standard_error << ")";
+        EXPECT_NEAR(m.mean, expected, tol)
+            << what << " channel " << c << " (standard error " << m.standard_error << ")";
     }
     EXPECT_EQ(r.nonfinite_samples, 0u);
     return widest;
@@ -57,7 +57,8 @@ Shape "sphere" "float radius" [1]
         s.max_depth = -1;
         s.spp = 1024;
         double expected = le / (1 - rho);
-        double tol = expect_radiance(render_pbrt(scene, s), expected, fmt::format("furnace rho={}", rho), 1e-4);
+        double tol =
+            expect_radiance(render_pbrt(scene, s), expected, fmt::format("furnace rho={}", rho), 1e-4);
         // The check is meaningful: the tolerance is well under 1% of the answer.
         EXPECT_LT(tol, 0.01 * expected) << "rho " << rho;
     }

@@ -19,7 +19,8 @@ TEST(FarCoordinates, PointLightBeyondEmbreesRangeDoesNotAbortTheRender) {
         s.spp = 2;
         auto r = test::render_pbrt(
             test::irradiance_receiver(
-                R"(LightSource "point" "point3 from" [0 0 9223372036854775804] "rgb I" [5 5 5])", integrator, 4),
+                R"(LightSource "point" "point3 from" [0 0 9223372036854775804] "rgb I" [5 5 5])", integrator,
+                4),
             s);
         EXPECT_EQ(r.nonfinite_samples, 0u);
         EXPECT_NEAR(r.image.channel_mean().g, 0, 1e-30) << "I / d² vanishes at d = 9.2e18";
@@ -53,8 +54,9 @@ Shape "trianglemesh" "point3 P" [-1 -1 0 1 -1 0 1 1 0 -1 1 0] "integer indices" 
     Ray good{{0, 0, 1}, {0, 0, -1}};
     ASSERT_TRUE(scene->accelerator.intersect(good, &hit));
     ASSERT_TRUE(scene->accelerator.occluded(good));
-    for (Ray bad : {Ray{{0, 0, 1}, {0, nan, -1}}, Ray{{nan, 0, 1}, {0, 0, -1}}, Ray{{0, 0, 1e19f}, {0, 0, -1}},
-                    Ray{{0, 0, 1}, {0, 0, -2e18f}}, Ray{{0, 0, 1}, {0, 0, -1}, nan}}) {
+    for (Ray bad :
+         {Ray{{0, 0, 1}, {0, nan, -1}}, Ray{{nan, 0, 1}, {0, 0, -1}}, Ray{{0, 0, 1e19f}, {0, 0, -1}},
+          Ray{{0, 0, 1}, {0, 0, -2e18f}}, Ray{{0, 0, 1}, {0, 0, -1}, nan}}) {
         EXPECT_FALSE(scene->accelerator.intersect(bad, &hit));
         EXPECT_FALSE(scene->accelerator.occluded(bad));
         EXPECT_EQ(scene->accelerator.intersect_distance(bad), kInfinity);
