@@ -3,8 +3,11 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 SHARED ?= $(abspath ../shared)
 DEMO_SPP ?= 64
+# The sanitizer build (ASan + UBSan with clang, cmake/sanitize.cmake), which also builds the fuzzer.
+SAN_BUILD ?= build-sanitize
 
-.PHONY: setup configure build demo test test-long bench fuzz format clean
+.PHONY: setup configure build demo test test-long sanitize-configure sanitize-build test-sanitize bench fuzz \
+	format clean
 
 setup:
 	bash scripts/setup.sh
@@ -21,14 +24,28 @@ demo: build
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE long
 
+# tests/long/ (label long); fails when no test matched.
 test-long: build
-	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -L long
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -L long --no-tests=error
+
+sanitize-configure: setup
+	cmake -C cmake/sanitize.cmake -S . -B $(SAN_BUILD) -DILLUM_SHARED_DIR=$(SHARED)
+
+sanitize-build: sanitize-configure
+	cmake --build $(SAN_BUILD) -j $(JOBS)
+
+# Every test but the long ones under AddressSanitizer + UndefinedBehaviorSanitizer, and a 60 s fuzz run
+# (label sanitize); any sanitizer report fails its test.
+test-sanitize: sanitize-build
+	ctest --test-dir $(SAN_BUILD) --output-on-failure -j $(JOBS) -LE long --no-tests=error
 
 FUZZ_SECONDS ?= 60
 
-# libFuzzer run of the pbrt tokenizer/parser and PLY reader (needs clang; `make setup` installs it).
-fuzz:
-	bash fuzz/run.sh $(BUILD)-fuzz $(FUZZ_SECONDS) $(SHARED)
+# libFuzzer run of the parser, the scene builder and a tiny render (fuzz/pbrt_scene_fuzz.cpp), built by the
+# sanitizer build; the corpus grows in $(SAN_BUILD)/fuzz-long.
+fuzz: sanitize-configure
+	cmake --build $(SAN_BUILD) -j $(JOBS) --target pbrt_scene_fuzz
+	bash fuzz/run.sh $(SAN_BUILD)/fuzz-target/pbrt_scene_fuzz $(SAN_BUILD)/fuzz-long $(FUZZ_SECONDS) $(SHARED)
 
 bench: build
 	./$(BUILD)/illum bench
@@ -38,4 +55,4 @@ format:
 	clang-format -i $$(git ls-files '*.h' '*.cpp')
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(SAN_BUILD)

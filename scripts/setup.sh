@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian packages illum builds against. Idempotent; uses sudo only when not root.
 set -euo pipefail
+# clang, libclang-rt-dev (the ASan/UBSan/libFuzzer runtimes: only a Recommends of clang, which
+# --no-install-recommends skips) and llvm (llvm-symbolizer, for sanitizer stack traces with file:line) are for
+# `make test-sanitize` and `make fuzz`.
 packages=(build-essential cmake pkg-config libembree-dev libtbb-dev libopenexr-dev libstb-dev libcli11-dev
-          nlohmann-json3-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev clang)
+          nlohmann-json3-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev clang
+          libclang-rt-dev llvm)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

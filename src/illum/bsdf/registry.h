@@ -45,7 +45,17 @@ struct ParamId {
         return h;
     }
 };
-consteval ParamId operator""_p(const char* s, std::size_t n) { return {ParamId::of(std::string_view(s, n))}; }
+// clang 14 (Debian 12's, used by `make test-sanitize`) does not evaluate a consteval call inside a generic
+// lambda at compile time and emits a call to the consteval function instead, which then fails to link
+// ("undefined reference to operator""_p"). There the literal is constexpr; the optimiser folds it.
+#if defined(__clang__) && __clang_major__ < 17
+#define ILLUM_PARAM_ID_CONSTEVAL constexpr
+#else
+#define ILLUM_PARAM_ID_CONSTEVAL consteval
+#endif
+ILLUM_PARAM_ID_CONSTEVAL ParamId operator""_p(const char* s, std::size_t n) {
+    return {ParamId::of(std::string_view(s, n))};
+}
 
 // One parameter of a model after validation: its constant value or the texture that gives it, the range
 // that shading clamps a textured value to, and the group of parameters whose sum must stay <= 1.

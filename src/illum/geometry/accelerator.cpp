@@ -96,6 +96,17 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
     }
 }
 
+// Embree 3 asserts on a ray whose origin or direction has a NaN component or one beyond ±1.844e18 (its
+// FLT_LARGE), or whose tfar is NaN, and Debian's build keeps the assertion: the process aborts (a shadow
+// ray towards a point light at z = 1e19 did, found by fuzz/pbrt_scene_fuzz.cpp). Such a ray cannot be
+// traced; it hits nothing.
+bool traceable(const RTCRay& r) {
+    constexpr float kEmbreeLarge = 1.844E18f;
+    for (float v : {r.org_x, r.org_y, r.org_z, r.dir_x, r.dir_y, r.dir_z})
+        if (!(std::abs(v) <= kEmbreeLarge)) return false;
+    return !std::isnan(r.tfar);
+}
+
 RTCRay to_embree(const Ray& ray) {
     RTCRay r;
     r.org_x = ray.o.x;
@@ -282,6 +293,7 @@ bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    if (!traceable(rh.ray)) return false;
     rtcIntersect1(scene_, &ctx, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
 
@@ -341,6 +353,7 @@ float Accelerator::intersect_distance(const Ray& ray) const {
     rh.ray = to_embree(ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    if (!traceable(rh.ray)) return kInfinity;
     rtcIntersect1(scene_, &ctx, &rh);
     return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
 }
@@ -349,6 +362,7 @@ bool Accelerator::occluded(const Ray& ray) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     RTCRay r = to_embree(ray);
+    if (!traceable(r)) return false;
     rtcOccluded1(scene_, &ctx, &r);
     return r.tfar < 0 && std::isinf(r.tfar);
 }
