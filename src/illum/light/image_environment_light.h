@@ -40,7 +40,9 @@ public:
     Power3 power() const override;
     std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2) const override;
 
-    // Radiance arriving from world direction w (towards the environment).
+    // Radiance arriving from world direction w (towards the environment). Light::radiance (emission from
+    // a surface point) stays visible beside it.
+    using Light::radiance;
     Radiance3 radiance(Vector3f w) const;
     // Illuminance-like integral ∫_{z>0} lum(L) cos θ dω over the upper hemisphere in light space
     // (before scale), for pbrt-v4's "illuminance" normalisation.
