@@ -42,6 +42,23 @@ inline RenderResult render_pbrt(const std::string& text, const RenderSetup& setu
     return render(*scene, *integrator, opt);
 }
 
+// A closed furnace: the camera inside a sphere that emits Le and reflects with Lambertian albedo ρ (a
+// one-sided emitter facing inwards), path traced to unbounded depth; every pixel sees Le / (1 - ρ).
+inline std::string closed_furnace(double rho, double le, int resolution) {
+    return fmt::format(R"(
+Integrator "path" "integer maxdepth" [-1]
+LookAt 0.1 0.2 0  1 0.3 0.2  0 0 1
+Camera "perspective" "float fov" [60]
+Film "rgb" "integer xresolution" [{res}] "integer yresolution" [{res}]
+WorldBegin
+Material "diffuse" "rgb reflectance" [{rho} {rho} {rho}]
+AreaLightSource "diffuse" "rgb L" [{le} {le} {le}]
+ReverseOrientation
+Shape "sphere" "float radius" [1]
+)",
+                       fmt::arg("rho", rho), fmt::arg("le", le), fmt::arg("res", resolution));
+}
+
 // An irradiance receiver: a white (ρ = 1) Lambertian plane z = 0 seen in a tiny orthographic window around
 // the origin from the side, so every pixel shows E(origin)/π for the light that `world` adds (depth 1).
 inline std::string irradiance_receiver(const std::string& world, const std::string& integrator = "direct",

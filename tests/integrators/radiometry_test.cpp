@@ -152,18 +152,7 @@ AttributeEnd
 TEST(Radiometry, ClosedFurnace) {
     for (double rho : {0.5, 0.8}) {
         const double le = 0.7;
-        std::string scene = fmt::format(R"(
-Integrator "path" "integer maxdepth" [-1]
-LookAt 0.1 0.2 0  1 0.3 0.2  0 0 1
-Camera "perspective" "float fov" [60]
-Film "rgb" "integer xresolution" [24] "integer yresolution" [24]
-WorldBegin
-Material "diffuse" "rgb reflectance" [{rho} {rho} {rho}]
-AreaLightSource "diffuse" "rgb L" [{le} {le} {le}]
-ReverseOrientation
-Shape "sphere" "float radius" [1]
-)",
-                                        fmt::arg("rho", rho), fmt::arg("le", le));
+        std::string scene = test::closed_furnace(rho, le, 24);
         RenderSetup s;
         s.max_depth = -1;
         s.spp = 32;

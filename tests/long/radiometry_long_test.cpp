@@ -41,18 +41,7 @@ double expect_radiance(const RenderResult& r, double expected, const std::string
 TEST(RadiometryLong, ClosedFurnaceManySamples) {
     for (double rho : {0.5, 0.8, 0.95}) {
         const double le = 0.7;
-        std::string scene = fmt::format(R"(
-Integrator "path" "integer maxdepth" [-1]
-LookAt 0.1 0.2 0  1 0.3 0.2  0 0 1
-Camera "perspective" "float fov" [60]
-Film "rgb" "integer xresolution" [64] "integer yresolution" [64]
-WorldBegin
-Material "diffuse" "rgb reflectance" [{rho} {rho} {rho}]
-AreaLightSource "diffuse" "rgb L" [{le} {le} {le}]
-ReverseOrientation
-Shape "sphere" "float radius" [1]
-)",
-                                        fmt::arg("rho", rho), fmt::arg("le", le));
+        std::string scene = test::closed_furnace(rho, le, 64);
         RenderSetup s;
         s.max_depth = -1;
         s.spp = 1024;

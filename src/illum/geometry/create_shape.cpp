@@ -30,16 +30,27 @@ float phimax_of(const ShapeDesc& s) {
 // Outward normals flip under ReverseOrientation and under a transform that swaps handedness (pbrt-v4).
 bool flip_of(const ShapeDesc& s) { return s.reverse_orientation != s.world_from_object.swaps_handedness(); }
 
-// Indices of a mesh checked against its vertex count; `per` vertices per face.
-void check_indices(const ShapeDesc& s, const std::vector<int>& idx, std::size_t vertices, int per) {
+// The positions "P" and the "indices" of a mesh given inline, `per` vertices per face, checked against each
+// other; without indices the mesh must be exactly one face.
+std::vector<int> positions_and_indices(const ShapeDesc& s, TriangleMesh& mesh, int per) {
+    mesh.p = s.params.get_point3s("P");
+    if (mesh.p.empty()) throw Error(s.loc, fmt::format("{} needs \"point3 P\"", s.type));
+    std::vector<int> idx = s.params.get_ints("indices");
+    if (idx.empty()) {
+        if (mesh.p.size() != std::size_t(per))
+            throw Error(s.loc, fmt::format("{} without \"indices\" must have {} vertices", s.type, per));
+        for (int i = 0; i < per; ++i) idx.push_back(i);
+        return idx;
+    }
     if (idx.size() % per != 0)
         throw Error(s.params.find("indices")->loc,
                     fmt::format("{} has {} indices, not a multiple of {}", s.type, idx.size(), per));
     for (int i : idx)
-        if (i < 0 || std::size_t(i) >= vertices)
-            throw Error(
-                s.params.find("indices")->loc,
-                fmt::format("{} index {} is out of range (the mesh has {} vertices)", s.type, i, vertices));
+        if (i < 0 || std::size_t(i) >= mesh.p.size())
+            throw Error(s.params.find("indices")->loc,
+                        fmt::format("{} index {} is out of range (the mesh has {} vertices)", s.type, i,
+                                    mesh.p.size()));
+    return idx;
 }
 
 // Per-vertex normals and uv of a mesh given inline.
@@ -55,14 +66,7 @@ void vertex_data(const ShapeDesc& s, TriangleMesh& mesh) {
 
 std::unique_ptr<TriangleMesh> triangle_mesh(const ShapeDesc& s) {
     auto mesh = std::make_unique<TriangleMesh>();
-    mesh->p = s.params.get_point3s("P");
-    auto idx = s.params.get_ints("indices");
-    if (mesh->p.empty()) throw Error(s.loc, "trianglemesh needs \"point3 P\"");
-    if (idx.empty()) {
-        if (mesh->p.size() != 3) throw Error(s.loc, "trianglemesh without \"indices\" must have 3 vertices");
-        idx = {0, 1, 2};
-    }
-    check_indices(s, idx, mesh->p.size(), 3);
+    std::vector<int> idx = positions_and_indices(s, *mesh, 3);
     mesh->indices.assign(idx.begin(), idx.end());
     vertex_data(s, *mesh);
     return mesh;
@@ -73,14 +77,7 @@ std::unique_ptr<TriangleMesh> triangle_mesh(const ShapeDesc& s) {
 // approximation of curved ones.
 std::unique_ptr<TriangleMesh> bilinear_mesh(const ShapeDesc& s) {
     auto mesh = std::make_unique<TriangleMesh>();
-    mesh->p = s.params.get_point3s("P");
-    auto idx = s.params.get_ints("indices");
-    if (mesh->p.empty()) throw Error(s.loc, "bilinearmesh needs \"point3 P\"");
-    if (idx.empty()) {
-        if (mesh->p.size() != 4) throw Error(s.loc, "bilinearmesh without \"indices\" must have 4 vertices");
-        idx = {0, 1, 2, 3};
-    }
-    check_indices(s, idx, mesh->p.size(), 4);
+    std::vector<int> idx = positions_and_indices(s, *mesh, 4);
     for (std::size_t q = 0; q < idx.size(); q += 4) {
         std::uint32_t a = idx[q], b = idx[q + 1], c = idx[q + 2], d = idx[q + 3];
         mesh->indices.insert(mesh->indices.end(), {a, b, d, a, d, c});

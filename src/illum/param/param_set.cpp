@@ -100,28 +100,23 @@ std::string ParamSet::get_string(const std::string& name, const std::string& def
     return p->strings[0];
 }
 
+template <class T>
+std::optional<T> ParamSet::get_triple(const std::string& name, ParamType type) const {
+    const Param* p = lookup(name, {type});
+    if (!p) return std::nullopt;
+    expect_count(*this, *p, 3);
+    return T(finite_float(*this, *p, p->numbers[0]), finite_float(*this, *p, p->numbers[1]),
+             finite_float(*this, *p, p->numbers[2]));
+}
+
 std::optional<Color3> ParamSet::get_rgb(const std::string& name) const {
-    const Param* p = lookup(name, {ParamType::RGB});
-    if (!p) return std::nullopt;
-    expect_count(*this, *p, 3);
-    return Color3(finite_float(*this, *p, p->numbers[0]), finite_float(*this, *p, p->numbers[1]),
-                  finite_float(*this, *p, p->numbers[2]));
+    return get_triple<Color3>(name, ParamType::RGB);
 }
-
 std::optional<Point3f> ParamSet::get_point3(const std::string& name) const {
-    const Param* p = lookup(name, {ParamType::Point3});
-    if (!p) return std::nullopt;
-    expect_count(*this, *p, 3);
-    return Point3f(finite_float(*this, *p, p->numbers[0]), finite_float(*this, *p, p->numbers[1]),
-                   finite_float(*this, *p, p->numbers[2]));
+    return get_triple<Point3f>(name, ParamType::Point3);
 }
-
 std::optional<Vector3f> ParamSet::get_vector3(const std::string& name) const {
-    const Param* p = lookup(name, {ParamType::Vector3});
-    if (!p) return std::nullopt;
-    expect_count(*this, *p, 3);
-    return Vector3f(finite_float(*this, *p, p->numbers[0]), finite_float(*this, *p, p->numbers[1]),
-                    finite_float(*this, *p, p->numbers[2]));
+    return get_triple<Vector3f>(name, ParamType::Vector3);
 }
 
 std::string ParamSet::get_texture(const std::string& name) const {

@@ -74,6 +74,9 @@ public:
 
 private:
     const Param* lookup(const std::string& name, std::initializer_list<ParamType> types) const;
+    // A three-number parameter of `type` as T (Color3, Point3f, Vector3f), each number finite.
+    template <class T>
+    std::optional<T> get_triple(const std::string& name, ParamType type) const;
     std::vector<Param> params_;
 };
 
