@@ -42,6 +42,21 @@ inline RenderResult render_pbrt(const std::string& text, const RenderSetup& setu
     return render(*scene, *integrator, opt);
 }
 
+// A disk emitter of radiance L and radius r at height h above the origin, facing down, with a black
+// material (for an irradiance receiver).
+inline std::string disk_light(double r, double h, double L) {
+    return fmt::format(R"(
+AttributeBegin
+  Material "diffuse" "rgb reflectance" [0 0 0]
+  AreaLightSource "diffuse" "rgb L" [{} {} {}]
+  Translate 0 0 {}
+  ReverseOrientation
+  Shape "disk" "float radius" [{}]
+AttributeEnd
+)",
+                       L, L, L, h, r);
+}
+
 // A closed furnace: the camera inside a sphere that emits Le and reflects with Lambertian albedo ρ (a
 // one-sided emitter facing inwards), path traced to unbounded depth; every pixel sees Le / (1 - ρ).
 inline std::string closed_furnace(double rho, double le, int resolution) {

@@ -16,19 +16,7 @@ using test::RenderSetup;
 
 constexpr double kSigmas = 4.5; // ~7e-6 two-sided false-alarm rate per check
 
-// A disk emitter of radiance L and radius r at height h, facing down, with a black material.
-std::string disk_light(double r, double h, double L) {
-    return fmt::format(R"(
-AttributeBegin
-  Material "diffuse" "rgb reflectance" [0 0 0]
-  AreaLightSource "diffuse" "rgb L" [{} {} {}]
-  Translate 0 0 {}
-  ReverseOrientation
-  Shape "disk" "float radius" [{}]
-AttributeEnd
-)",
-                       L, L, L, h, r);
-}
+using test::disk_light;
 
 void expect_radiance(const RenderResult& r, double expected, const char* what, double rel_float = 2e-5) {
     auto g = pixel_mean(r.image, 1);

@@ -59,16 +59,7 @@ TEST(RadiometryLong, DiskIrradianceOnAxisManySamples) {
     const double L = 2.0;
     for (auto [r, h] : {std::pair{1.0, 1.0}, std::pair{0.5, 2.0}, std::pair{2.0, 0.5}}) {
         double expected = L * r * r / (r * r + h * h);
-        std::string world = fmt::format(R"(
-AttributeBegin
-  Material "diffuse" "rgb reflectance" [0 0 0]
-  AreaLightSource "diffuse" "rgb L" [{} {} {}]
-  Translate 0 0 {}
-  ReverseOrientation
-  Shape "disk" "float radius" [{}]
-AttributeEnd
-)",
-                                        L, L, L, h, r);
+        std::string world = test::disk_light(r, h, L);
         for (const char* integrator : {"direct", "path"}) {
             RenderSetup s;
             s.integrator = integrator;

@@ -152,9 +152,10 @@ std::vector<Point2f> ParamSet::get_point2s(const std::string& name) const {
     return r;
 }
 
-std::vector<Point3f> ParamSet::get_point3s(const std::string& name) const {
-    const Param* p = lookup(name, {ParamType::Point3});
-    std::vector<Point3f> r;
+template <class T>
+std::vector<T> ParamSet::get_triples(const std::string& name, ParamType type) const {
+    const Param* p = lookup(name, {type});
+    std::vector<T> r;
     if (!p) return r;
     expect_multiple(*this, *p, 3);
     for (size_t i = 0; i + 2 < p->numbers.size(); i += 3)
@@ -163,15 +164,11 @@ std::vector<Point3f> ParamSet::get_point3s(const std::string& name) const {
     return r;
 }
 
+std::vector<Point3f> ParamSet::get_point3s(const std::string& name) const {
+    return get_triples<Point3f>(name, ParamType::Point3);
+}
 std::vector<Normal3f> ParamSet::get_normals(const std::string& name) const {
-    const Param* p = lookup(name, {ParamType::Normal});
-    std::vector<Normal3f> r;
-    if (!p) return r;
-    expect_multiple(*this, *p, 3);
-    for (size_t i = 0; i + 2 < p->numbers.size(); i += 3)
-        r.push_back({finite_float(*this, *p, p->numbers[i]), finite_float(*this, *p, p->numbers[i + 1]),
-                     finite_float(*this, *p, p->numbers[i + 2])});
-    return r;
+    return get_triples<Normal3f>(name, ParamType::Normal);
 }
 
 std::vector<std::string> ParamSet::get_strings(const std::string& name) const {

@@ -77,6 +77,8 @@ private:
     // A three-number parameter of `type` as T (Color3, Point3f, Vector3f), each number finite.
     template <class T>
     std::optional<T> get_triple(const std::string& name, ParamType type) const;
+    template <class T>
+    std::vector<T> get_triples(const std::string& name, ParamType type) const; // a list of them
     std::vector<Param> params_;
 };
 
