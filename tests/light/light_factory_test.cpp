@@ -30,8 +30,9 @@ Made make(const std::string& world) {
     Made m;
     m.desc = parse_pbrt_string("WorldBegin\n" + world + "\n", "<light test>", ".");
     EXPECT_EQ(m.desc.lights.size(), 1u);
-    LightFactoryContext ctx{[&](const SourceLocation&, const std::string& w) { m.warnings.push_back(w); }};
-    m.light = make_light(m.desc.lights.at(0), ctx);
+    Diagnostics diag;
+    m.light = make_light(m.desc.lights.at(0), diag);
+    m.warnings = diag.warnings();
     for (const Param* p : m.desc.lights.at(0).params.unused()) m.unused.push_back(p->name);
     return m;
 }

@@ -82,20 +82,22 @@ Shape "trianglemesh" "point3 P" [-5 -5 0 5 -5 0 5 5 0 -5 5 0] "integer indices" 
     EXPECT_EQ(reversed.g, 0);
 }
 
-// Two missing PLY files and a missing texture image: one error names all three, each at its parameter.
+// Two missing PLY files, a missing texture image and a missing environment map: one error names all four,
+// each at its parameter.
 TEST_F(SceneFiles, EveryMissingFileIsReportedInOneRun) {
     write("scene.pbrt", std::string(kHeader) + R"(
 Texture "t" "spectrum" "imagemap" "string filename" "nothere.png"
 Shape "plymesh" "string filename" "gone-a.ply"
 Shape "plymesh" "string filename" "gone-b.ply"
+LightSource "infinite" "string filename" "sky.exr"
 )");
     try {
         build_scene(parse_pbrt_file((root_ / "scene.pbrt").string()));
         FAIL() << "expected an error";
     } catch (const Error& e) {
         std::string what = e.what();
-        EXPECT_NE(what.find("3 files cannot be read"), std::string::npos) << what;
-        for (const char* name : {"nothere.png", "gone-a.ply", "gone-b.ply"})
+        EXPECT_NE(what.find("4 files cannot be read"), std::string::npos) << what;
+        for (const char* name : {"nothere.png", "gone-a.ply", "gone-b.ply", "sky.exr"})
             EXPECT_NE(what.find(name), std::string::npos) << name << " in " << what;
         EXPECT_NE(what.find("scene.pbrt:6:"), std::string::npos) << what;
         EXPECT_NE(what.find("scene.pbrt:8:"), std::string::npos) << what;

@@ -1,6 +1,9 @@
 #include "illum/light/light_factory.h"
 
+#include <cerrno>
+#include <cstring>
 #include <fmt/format.h>
+#include <fstream>
 
 #include "illum/light/directional_light.h"
 #include "illum/light/image_environment_light.h"
@@ -50,7 +53,7 @@ Vector3f unit_or_fail(const LightDesc& l, Vector3f v, const char* what) {
 
 } // namespace
 
-std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext& ctx) {
+std::unique_ptr<Light> make_light(const LightDesc& l, Diagnostics& diag) {
     float scale = l.params.get_float("scale", 1);
     if (!std::isfinite(scale) || scale < 0)
         throw Error(l.loc, fmt::format("light \"{}\": bad scale {}", l.type, scale));
@@ -109,9 +112,9 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
             // samples those better; illum keeps the whole map: the same image wherever the scene's walls
             // hide the other directions, as they do in the interiors portals are meant for.
             portal->used = true;
-            ctx.unsupported(portal->loc,
-                            "infinite light \"portal\" is not supported: the whole environment emits and is "
-                            "sampled");
+            diag.unsupported(portal->loc,
+                             "infinite light \"portal\" is not supported: the whole environment emits and is "
+                             "sampled");
         }
         std::string filename = l.params.get_string("filename", "");
         if (!filename.empty()) {
@@ -126,6 +129,11 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
                 if (!layout)
                     throw Error(l.params.find("layout")->loc,
                                 fmt::format("unknown layout \"{}\"", layout_name));
+            }
+            if (!std::ifstream(filename)) {
+                diag.missing_file(l.params.find("filename")->loc,
+                                  fmt::format("cannot read \"{}\": {}", filename, std::strerror(errno)));
+                return nullptr;
             }
             EnvironmentMap map;
             try {
@@ -142,8 +150,8 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
                                                                     scale * illuminance / e_up, sampling);
             }
             if (light->map().mean_radiance().is_black())
-                ctx.unsupported(l.loc,
-                                fmt::format("environment map \"{}\" is black: it emits nothing", filename));
+                diag.unsupported(l.loc,
+                                 fmt::format("environment map \"{}\" is black: it emits nothing", filename));
             return light;
         }
         Color3 c(1.0f);
@@ -159,7 +167,7 @@ std::unique_ptr<Light> make_light(const LightDesc& l, const LightFactoryContext&
         return std::make_unique<UniformEnvironmentLight>(Radiance3(c * scale));
     }
     if (l.type == "goniometric" || l.type == "projection") {
-        ctx.unsupported(l.loc, fmt::format("light \"{}\" is not supported yet and is skipped", l.type));
+        diag.unsupported(l.loc, fmt::format("light \"{}\" is not supported yet and is skipped", l.type));
         return nullptr;
     }
     throw Error(l.loc, fmt::format("unknown light type \"{}\"", l.type));

@@ -128,9 +128,7 @@ private:
     }
 
     void add_light(const LightDesc& l) {
-        LightFactoryContext ctx{
-            [this](const SourceLocation& loc, const std::string& what) { diag_.unsupported(loc, what); }};
-        if (auto light = make_light(l, ctx)) scene_->lights.push_back(std::move(light));
+        if (auto light = make_light(l, diag_)) scene_->lights.push_back(std::move(light));
     }
 
     // pbrt's ObjectBegin/ObjectInstance: each definition is built once, in its own space, as an Embree
