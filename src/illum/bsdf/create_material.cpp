@@ -192,9 +192,15 @@ private:
         } catch (const Error& e) {
             throw Error(m_.loc, e.what());
         }
-        // The albedo pass shows the directional albedo at normal incidence.
-        AlbedoEstimate a = directional_albedo(*bxdf, {0, 0, 1}, spec.delta, 16, 4096, 1);
-        Color3 albedo(float(a.mc[0]), float(a.mc[1]), float(a.mc[2]));
+        // The albedo pass shows the directional albedo at normal incidence: in closed form where the model
+        // has one, else estimated (4096 samples) once here.
+        Color3 albedo;
+        if (spec.normal_albedo) {
+            albedo = spec.normal_albedo(ModelArgs(values.args, nullptr));
+        } else {
+            AlbedoEstimate a = directional_albedo(*bxdf, {0, 0, 1}, spec.delta, 16, 4096, 1);
+            albedo = Color3(float(a.mc[0]), float(a.mc[1]), float(a.mc[2]));
+        }
         if (!textured) return own(std::make_unique<SharedBxDFMaterial>(std::move(bxdf), albedo));
         if (!spec.factory.textured)
             throw Error(m_.loc, fmt::format("material \"{}\" cannot have textured parameters", spec.name));

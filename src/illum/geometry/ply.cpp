@@ -215,10 +215,11 @@ void read_file(const std::string& path, std::string& out) {
     size_t m = std::fread(magic, 1, 2, f);
     bool gz = m == 2 && magic[0] == 0x1f && magic[1] == 0x8b;
     if (!gz) {
-        out.assign(reinterpret_cast<const char*>(magic), m);
-        char buf[1 << 16];
-        size_t n;
-        while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) out.append(buf, n);
+        // One read into a buffer of the file's size (no growing copies: PLY files reach hundreds of MB).
+        out.resize(size_t(st.st_size));
+        std::memcpy(out.data(), magic, std::min(m, out.size()));
+        size_t got = out.size() > m ? std::fread(out.data() + m, 1, out.size() - m, f) : 0;
+        out.resize(std::min(out.size(), m + got));
         if (std::ferror(f)) {
             int err = errno;
             throw Error(SourceLocation{path, 0, 0},
