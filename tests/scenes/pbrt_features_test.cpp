@@ -84,6 +84,38 @@ Shape "sphere"
     EXPECT_EQ(empty, 1); // interface
 }
 
+// pbrt-v4's thindielectric is the registry's thin-dielectric under its pbrt-v4 name: a named glass's index
+// is its RGB mean without a warning, another spectrum is warned, a textured index is evaluated per hit
+// (it was rendered with 1.5, warned), and an index of 0 is an error rather than clamped.
+TEST(PbrtMaterials, ThinDielectricIsAnAliasOfTheRegistryModel) {
+    auto glass = build("Material \"thindielectric\" \"spectrum eta\" \"glass-BK7\"\nShape \"sphere\"\n");
+    EXPECT_TRUE(glass->warnings.empty()) << glass->warnings.front();
+    auto sampled =
+        build("Material \"thindielectric\" \"spectrum eta\" [400 1.6 700 1.4]\nShape \"sphere\"\n");
+    ASSERT_EQ(sampled->warnings.size(), 1u);
+    EXPECT_NE(sampled->warnings[0].find("rendered with its mean"), std::string::npos) << sampled->warnings[0];
+    auto textured = build(R"(Texture "e" "float" "checkerboard" "float uscale" 2 "float tex1" 1.2 "float tex2" 2.4
+Material "thindielectric" "texture eta" "e"
+Shape "sphere"
+)");
+    EXPECT_TRUE(textured->warnings.empty()) << textured->warnings.front();
+    // At uv (0.25, 0.25) the checkerboard gives 1.2, at (0.75, 0.25) 2.4: a thin pane reflects more at 2.4.
+    SurfaceHit hit;
+    hit.n = hit.ns = Normal3f(0, 0, 1);
+    hit.dpdu = {1, 0, 0};
+    hit.wo = {0, 0, 1};
+    ScratchArena arena;
+    auto reflectance = [&](float u) {
+        hit.uv = {u, 0.25f};
+        BSDF b = textured->materials.front()->bsdf(hit, arena);
+        auto s = b.sample(hit.wo, 0.0f, {0.5f, 0.5f}); // uc = 0 picks reflection
+        EXPECT_TRUE(s && s->is_reflection());
+        return s ? s->pdf.value : 0.0f; // the lobe's probability is the pane's reflectance
+    };
+    EXPECT_LT(reflectance(0.25f), reflectance(0.75f));
+    EXPECT_THROW(build("Material \"thindielectric\" \"float eta\" 0\nShape \"sphere\"\n"), Error);
+}
+
 TEST(PbrtMaterials, ConductorReflectanceIsTheNormalIncidenceFresnel) {
     auto s = build("Material \"conductor\" \"rgb reflectance\" [0.9 0.5 0.2]\nShape \"sphere\"\n");
     SurfaceHit hit;

@@ -23,6 +23,7 @@ struct MaterialAlias {
 const std::vector<MaterialAlias>& material_aliases() {
     static const std::vector<MaterialAlias> aliases = {
         {"diffuse", "lambert", {}},
+        {"thindielectric", "thin-dielectric", {}},
     };
     return aliases;
 }
@@ -35,8 +36,6 @@ public:
         if (type == "conductor") return conductor("");
         if (type == "dielectric")
             return own(std::make_unique<DielectricMaterial>(eta_param("eta", 1.5f), roughness()));
-        if (type == "thindielectric")
-            return own(std::make_unique<ThinDielectricMaterial>(eta_param("eta", 1.5f)));
         if (type == "coateddiffuse")
             return own(
                 std::make_unique<CoatedDiffuseMaterial>(tex_.color(m_.params, "reflectance", Color3(0.5f)),

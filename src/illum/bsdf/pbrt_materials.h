@@ -16,7 +16,6 @@
 #include "illum/bsdf/material.h"
 #include "illum/bsdf/rough_conductor.h"
 #include "illum/bsdf/rough_dielectric.h"
-#include "illum/bsdf/thin_dielectric.h"
 
 namespace illum {
 
@@ -100,18 +99,6 @@ public:
 private:
     float eta_;
     RoughnessParams rough_;
-};
-
-class ThinDielectricMaterial final : public Material {
-public:
-    explicit ThinDielectricMaterial(float eta) : eta_(eta) {}
-    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
-        return BSDF(arena.make<ThinDielectricBxDF>(eta_), hit.shading_frame());
-    }
-    Color3 albedo(const SurfaceHit&) const override { return Color3(1.0f); }
-
-private:
-    float eta_;
 };
 
 // The layer of pbrt-v4's coated materials: thickness, medium albedo and asymmetry g (textures), and the

@@ -530,6 +530,8 @@ std::vector<ModelSpec> build_models() {
             spec.normal_albedo = [](const ModelArgs& p) { return p.rgb("reflectance"_p); };
         else if (spec.name == "mirror")
             spec.normal_albedo = [](const ModelArgs& p) { return p.rgb("reflectance"_p); };
+        else if (spec.name == "dielectric" || spec.name == "thin-dielectric")
+            spec.normal_albedo = [](const ModelArgs&) { return Color3(1.0f); }; // lossless: R + T = 1
         else if (spec.name == "diffuse-transmission")
             spec.normal_albedo = [](const ModelArgs& p) {
                 return p.rgb("reflectance"_p) + p.rgb("transmittance"_p);
@@ -542,6 +544,8 @@ std::vector<ModelSpec> build_models() {
             spec.unit_sums = {{"kd", "ks"}};
         else if (spec.name == "ward")
             spec.unit_sums = {{"rho_d", "rho_s"}};
+        else if (spec.name == "dielectric" || spec.name == "thin-dielectric")
+            spec.normal_albedo = [](const ModelArgs&) { return Color3(1.0f); }; // lossless: R + T = 1
         else if (spec.name == "diffuse-transmission")
             spec.unit_sums = {{"reflectance", "transmittance"}};
     }
@@ -682,6 +686,17 @@ ModelArg model_arg(const ModelSpec& model, const ParamSpec& spec, const Param& p
         if (p.type == ParamType::Spectrum && spec.kind == ParamKind::Rgb) {
             Color3 c = spectrum_param_rgb(p, SpectrumKind::Unbounded);
             v = {c.r, c.g, c.b};
+        } else if (p.type == ParamType::Spectrum && spec.kind == ParamKind::Scalar) {
+            // A spectral scalar (an index of refraction "glass-BK7", say) in an RGB render: the mean of its
+            // RGB reduction, which for pbrt-v4's named glasses is their index near 550 nm; any other
+            // spectrum is warned as rendered with its mean.
+            double mean = spectrum_param_rgb(p, SpectrumKind::Unbounded).average();
+            bool named_glass = p.strings.size() == 1 && p.strings[0].rfind("glass-", 0) == 0;
+            if (!named_glass && textures)
+                textures->diagnostics().unsupported(p.loc, "spectrally varying \"" + spec.name +
+                                                               "\" is rendered with its mean " +
+                                                               fmt_num(mean));
+            v = {mean};
         } else if (p.type == ParamType::Float || p.type == ParamType::Integer ||
                    (p.type == ParamType::RGB && spec.kind == ParamKind::Rgb)) {
             v = p.numbers;
@@ -694,8 +709,11 @@ ModelArg model_arg(const ModelSpec& model, const ParamSpec& spec, const Param& p
             param_error(p, model.name, "takes one value or r,g,b, got '" + value_text(p) + "'");
         if (spec.kind == ParamKind::Integer && v[0] != std::floor(v[0]))
             param_error(p, model.name, "must be an integer, got '" + value_text(p) + "'");
+        // pbrt-v4 clamps reflectances where it uses them; an alias of it does the same (other values are
+        // checked).
         for (double& x : v)
-            if (clamp && std::isfinite(x)) x = std::clamp(x, spec.min, spec.max);
+            if (clamp && spec.kind == ParamKind::Rgb && std::isfinite(x))
+                x = std::clamp(x, spec.min, spec.max);
         for (double x : v)
             if (!(x >= spec.min && x <= spec.max))
                 param_error(p, model.name,

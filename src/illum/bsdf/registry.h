@@ -193,9 +193,10 @@ const ModelSpec& find_bxdf_model(const std::string& name);
 // Texture-valued parameters are resolved through `textures` (an error when it is null or the parameter
 // cannot be textured); defaults are applied. Marks every parameter it reads used. Throws illum::Error at
 // the parameter's position.
-// With `pbrt_alias` (a pbrt-v4 material name standing for the model), out-of-range numbers are clamped
-// to the range (pbrt-v4 clamps reflectances where it uses them) and parameters the model does not know are
-// left unused, for the builder to report as pbrt-v4 parameters illum does not use.
+// With `pbrt_alias` (a pbrt-v4 material name standing for the model), out-of-range colours are clamped to
+// the range (pbrt-v4 clamps reflectances where it uses them) and parameters the model does not know are
+// left unused, for the builder to report as pbrt-v4 parameters illum does not use. A spectrum given for a
+// scalar (an index of refraction) is reduced to the mean of its RGB, warned unless it is a named glass.
 ParamValues resolve_params(const ModelSpec& model, const ParamSet& params,
                            class TextureParams* textures = nullptr, bool pbrt_alias = false);
 // Parameters as text (`illum brdf ... name=value`, audit grids): numbers for scalar, integer and rgb
