@@ -13,20 +13,17 @@ namespace illum {
 
 namespace {
 
-// pbrt-v4 material names that are a registry model under another name: the model and the map from
-// pbrt-v4's parameter names to the model's (names not listed are the same).
+// pbrt-v4 material names that are a registry model under another name, with the same parameter names
+// (both aliases so far need no renaming; pbrt-v4 parameters the model lacks are left to the unused-
+// parameter warning).
 struct MaterialAlias {
     const char* pbrt_name;
     const char* model;
-    std::vector<std::pair<std::string, std::string>> renamed;
 };
-const std::vector<MaterialAlias>& material_aliases() {
-    static const std::vector<MaterialAlias> aliases = {
-        {"diffuse", "lambert", {}},
-        {"thindielectric", "thin-dielectric", {}},
-    };
-    return aliases;
-}
+constexpr MaterialAlias kMaterialAliases[] = {
+    {"diffuse", "lambert"},
+    {"thindielectric", "thin-dielectric"},
+};
 
 class MaterialMaker {
 public:
@@ -59,10 +56,10 @@ public:
             for (const Param& p : m_.params.params()) p.used = true;
             return own(std::make_unique<DiffuseMaterial>(tex_.constant(Color3(0.5f))));
         }
-        for (const MaterialAlias& a : material_aliases())
-            if (type == a.pbrt_name) return model(find_bxdf_model(a.model), &a);
+        for (const MaterialAlias& a : kMaterialAliases)
+            if (type == a.pbrt_name) return model(find_bxdf_model(a.model), true);
         for (const ModelSpec& spec : bxdf_models())
-            if (spec.name == type) return model(spec, nullptr);
+            if (spec.name == type) return model(spec, false);
         throw Error(m_.loc, fmt::format("unknown material type \"{}\"", type));
     }
 
@@ -163,22 +160,10 @@ private:
     // A registry model, e.g. Material "ward" "rgb rho_d" [0.2 0.1 0.05] "texture rho_s" "tex", or a pbrt-v4
     // alias of one. Constant parameters: one BxDF built now and shared by every hit. Textured ones: the
     // model is placed in the arena per hit from the slots resolved here.
-    const Material* model(const ModelSpec& spec, const MaterialAlias* alias) {
-        ParamSet renamed;
-        const ParamSet* params = &m_.params;
-        if (alias && !alias->renamed.empty()) {
-            for (const Param& p : m_.params.params()) {
-                Param q = p;
-                for (const auto& [from, to] : alias->renamed)
-                    if (p.name == from) q.name = to;
-                p.used = true;
-                renamed.add(std::move(q));
-            }
-            params = &renamed;
-        }
+    const Material* model(const ModelSpec& spec, bool pbrt_alias) {
         ParamValues values;
         try {
-            values = resolve_params(spec, *params, &tex_, alias != nullptr);
+            values = resolve_params(spec, m_.params, &tex_, pbrt_alias);
         } catch (const Error& e) {
             if (!e.where().file.empty()) throw;
             throw Error(m_.loc, e.what());
