@@ -83,11 +83,7 @@ private:
         if (!p) return def;
         float eta = def;
         if (p->type == ParamType::Spectrum) {
-            eta = spectrum_param_rgb(*p, SpectrumKind::Unbounded).average();
-            if (!(p->strings.size() == 1 && p->strings[0].rfind("glass-", 0) == 0))
-                tex_.diagnostics().unsupported(
-                    p->loc,
-                    fmt::format("spectrally varying \"{}\" is rendered with its mean {:.4g}", name, eta));
+            eta = spectrum_param_mean(*p, &tex_.diagnostics());
         } else if (p->type == ParamType::Texture) {
             p->used = true;
             tex_.diagnostics().unsupported(p->loc,

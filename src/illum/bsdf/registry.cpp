@@ -526,9 +526,7 @@ std::vector<ModelSpec> build_models() {
          })});
     // Closed-form albedos at normal incidence: ρ for Lambert, R for the mirror, R + T for the sheet.
     for (ModelSpec& spec : m) {
-        if (spec.name == "lambert")
-            spec.normal_albedo = [](const ModelArgs& p) { return p.rgb("reflectance"_p); };
-        else if (spec.name == "mirror")
+        if (spec.name == "lambert" || spec.name == "mirror")
             spec.normal_albedo = [](const ModelArgs& p) { return p.rgb("reflectance"_p); };
         else if (spec.name == "dielectric" || spec.name == "thin-dielectric")
             spec.normal_albedo = [](const ModelArgs&) { return Color3(1.0f); }; // lossless: R + T = 1
@@ -599,16 +597,13 @@ ParamSet params_from_text(const ModelSpec& model, const std::map<std::string, st
     for (const auto& [name, value] : params) {
         Param p;
         p.name = name;
-        p.loc = {};
         const ParamSpec* spec = nullptr;
         for (const auto& ps : model.params)
             if (ps.name == name) spec = &ps;
         if (spec && (spec->kind == ParamKind::Scalar || spec->kind == ParamKind::Integer ||
                      spec->kind == ParamKind::Rgb)) {
             p.numbers = parse_numbers(model.name, *spec, value);
-            p.type = p.numbers.size() == 3 ? ParamType::RGB : ParamType::Float;
-            if (p.type == ParamType::Float && spec->kind == ParamKind::Rgb && p.numbers.size() == 1)
-                p.type = ParamType::Float; // a grey value
+            p.type = p.numbers.size() == 3 ? ParamType::RGB : ParamType::Float; // one number: a grey
         } else {
             p.type = ParamType::String; // a choice or a path; an unknown name is reported by resolve_params
             p.strings = {value};
@@ -634,10 +629,6 @@ std::string value_text(const Param& p) {
     }
     return out;
 }
-
-} // namespace
-
-namespace {
 
 // A spec's default as the parameter a scene file would write.
 Param default_param(const ModelSpec& model, const ParamSpec& spec) {
@@ -687,16 +678,7 @@ ModelArg model_arg(const ModelSpec& model, const ParamSpec& spec, const Param& p
             Color3 c = spectrum_param_rgb(p, SpectrumKind::Unbounded);
             v = {c.r, c.g, c.b};
         } else if (p.type == ParamType::Spectrum && spec.kind == ParamKind::Scalar) {
-            // A spectral scalar (an index of refraction "glass-BK7", say) in an RGB render: the mean of its
-            // RGB reduction, which for pbrt-v4's named glasses is their index near 550 nm; any other
-            // spectrum is warned as rendered with its mean.
-            double mean = spectrum_param_rgb(p, SpectrumKind::Unbounded).average();
-            bool named_glass = p.strings.size() == 1 && p.strings[0].rfind("glass-", 0) == 0;
-            if (!named_glass && textures)
-                textures->diagnostics().unsupported(p.loc, "spectrally varying \"" + spec.name +
-                                                               "\" is rendered with its mean " +
-                                                               fmt_num(mean));
-            v = {mean};
+            v = {spectrum_param_mean(p, textures ? &textures->diagnostics() : nullptr)};
         } else if (p.type == ParamType::Float || p.type == ParamType::Integer ||
                    (p.type == ParamType::RGB && spec.kind == ParamKind::Rgb)) {
             v = p.numbers;
@@ -749,7 +731,6 @@ ModelArg model_arg(const ModelSpec& model, const ParamSpec& spec, const Param& p
 
 ParamValues resolve_params(const ModelSpec& model, const ParamSet& params, TextureParams* textures,
                            bool pbrt_alias) {
-    bool clamp = pbrt_alias;
     for (const Param& p : params.params()) {
         if (p.name == "type" || pbrt_alias) continue; // "type": MakeNamedMaterial's own
         bool known = false;
@@ -764,7 +745,7 @@ ParamValues resolve_params(const ModelSpec& model, const ParamSet& params, Textu
     ParamValues out;
     for (const ParamSpec& spec : model.params) {
         if (const Param* p = params.find(spec.name))
-            out.args.push_back(model_arg(model, spec, *p, params, textures, clamp));
+            out.args.push_back(model_arg(model, spec, *p, params, textures, pbrt_alias));
         else if (!spec.default_value.empty())
             out.args.push_back(model_arg(model, spec, default_param(model, spec), params, nullptr));
     }

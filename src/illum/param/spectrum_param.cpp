@@ -56,4 +56,13 @@ Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind) {
     return kind == SpectrumKind::Illuminant ? illuminant_spectrum_to_rgb(s) : unbounded_spectrum_to_rgb(s);
 }
 
+float spectrum_param_mean(const Param& p, Diagnostics* diag) {
+    float mean = spectrum_param_rgb(p, SpectrumKind::Unbounded).average();
+    bool named_glass = p.strings.size() == 1 && p.strings[0].rfind("glass-", 0) == 0;
+    if (!named_glass && diag)
+        diag->unsupported(
+            p.loc, fmt::format("spectrally varying \"{}\" is rendered with its mean {:.4g}", p.name, mean));
+    return mean;
+}
+
 } // namespace illum

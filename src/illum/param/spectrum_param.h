@@ -4,6 +4,7 @@
 
 #include "illum/param/param_set.h"
 #include "illum/radiometry/color.h"
+#include "illum/util/diagnostics.h"
 
 namespace illum {
 
@@ -16,5 +17,10 @@ enum class SpectrumKind {
 // a file of such pairs (its name already resolved against the scene's folder by the parser). Marks the
 // parameter used; throws illum::Error at its position for a bad spectrum or an unreadable file.
 Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind);
+
+// A spectrum given for a scalar (an index of refraction "glass-BK7", say) in an RGB render: the mean of its
+// RGB reduction, which for pbrt-v4's named glasses is their index near 550 nm. Any other spectrum is
+// reported to `diag` (when given) as rendered with that mean.
+float spectrum_param_mean(const Param& p, Diagnostics* diag);
 
 } // namespace illum

@@ -29,16 +29,29 @@ bool is_eight_bit(const std::string& path) {
     return ext != ".exr" && ext != ".pfm" && ext != ".hdr";
 }
 
-// The image of an imagemap, decoded as `encoding` says: read_image gives 8-bit files as sRGB-decoded
-// linear values; "linear" asks for the raw values, "gamma g" for v^g. The file name was resolved against
-// the scene's folder by the parser. nullptr (recorded in the diagnostics) when it cannot be read.
+// The exponent an 8-bit image's `encoding` asks for, checked once: 0 for "sRGB" (read_image's own
+// decoding), 1 for "linear" (the raw values), g for "gamma g" (v^g).
+float encoding_gamma(const TextureDesc& t, const std::string& encoding) {
+    if (encoding == "sRGB") return 0;
+    if (encoding == "linear") return 1;
+    if (encoding.rfind("gamma ", 0) != 0)
+        throw Error(t.params.find("encoding")->loc, fmt::format("unknown image encoding \"{}\"", encoding));
+    char* end = nullptr;
+    float gamma = std::strtof(encoding.c_str() + 6, &end);
+    if (*end != '\0' || !(gamma > 0) || !std::isfinite(gamma))
+        throw Error(t.params.find("encoding")->loc, fmt::format("bad image encoding \"{}\"", encoding));
+    return gamma;
+}
+
+// The image of an imagemap, decoded as `encoding` says (8-bit files only; float files are linear). The
+// file name was resolved against the scene's folder by the parser. nullptr (recorded in the diagnostics)
+// when it cannot be read.
 std::shared_ptr<const Image> load_image(const TextureDesc& t, const std::string& encoding,
                                         TextureParams& params) {
     const Param* f = t.params.find("filename");
     std::string path = t.params.get_string("filename", "");
     if (path.empty()) throw Error(t.loc, "imagemap needs \"string filename\"");
-    if (is_eight_bit(path) && encoding != "sRGB" && encoding != "linear" && encoding.rfind("gamma ", 0) != 0)
-        throw Error(t.params.find("encoding")->loc, fmt::format("unknown image encoding \"{}\"", encoding));
+    float gamma = is_eight_bit(path) ? encoding_gamma(t, encoding) : 0;
     std::string key = path + "|" + encoding;
     if (auto it = params.images().find(key); it != params.images().end()) return it->second;
     Image img;
@@ -48,15 +61,7 @@ std::shared_ptr<const Image> load_image(const TextureDesc& t, const std::string&
         params.diagnostics().missing_file(f->loc, err.what());
         return nullptr;
     }
-    if (is_eight_bit(path) && encoding != "sRGB") {
-        float gamma = 1;
-        if (encoding != "linear") {
-            char* end = nullptr;
-            gamma = std::strtof(encoding.c_str() + 6, &end);
-            if (*end != '\0' || !(gamma > 0) || !std::isfinite(gamma))
-                throw Error(t.params.find("encoding")->loc,
-                            fmt::format("bad image encoding \"{}\"", encoding));
-        }
+    if (gamma > 0) { // undo read_image's sRGB decoding, then apply the gamma asked for
         for (std::size_t i = 0; i < img.pixel_count(); ++i) {
             Color3& c = img.data()[i];
             for (int k = 0; k < 3; ++k) {

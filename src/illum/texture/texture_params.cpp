@@ -25,17 +25,11 @@ const FloatTexture* TextureParams::constant(float v) {
 std::optional<Color3> TextureParams::constant_color(const ParamSet& e, const std::string& name) const {
     const Param* p = e.find(name);
     if (!p) return std::nullopt;
-    switch (p->type) {
-    case ParamType::RGB: {
-        Color3 c = *e.get_rgb(name);
-        if (!c.is_finite()) throw Error(p->loc, fmt::format("\"{}\" is not finite", name));
-        return c;
-    }
-    case ParamType::Float: {
-        float v = e.get_float(name, 0);
-        if (!std::isfinite(v)) throw Error(p->loc, fmt::format("\"{}\" is not finite", name));
-        return Color3(v);
-    }
+    switch (p->type) { // ParamSet's getters refuse non-finite numbers, with the parameter's position
+    case ParamType::RGB:
+        return *e.get_rgb(name);
+    case ParamType::Float:
+        return Color3(e.get_float(name, 0));
     case ParamType::Spectrum:
         return spectrum_param_rgb(*p, SpectrumKind::Unbounded);
     default:
@@ -69,9 +63,7 @@ const FloatTexture* TextureParams::scalar(const ParamSet& e, const std::string& 
                 fmt::format("texture \"{}\" is a spectrum texture; \"{}\" needs a float texture", t, name));
         throw Error(p->loc, fmt::format("undefined float texture \"{}\"", t));
     }
-    float v = e.get_float(name, 0);
-    if (!std::isfinite(v)) throw Error(p->loc, fmt::format("\"{}\" is not finite", name));
-    return constant(v);
+    return constant(e.get_float(name, 0)); // finite, or ParamSet's positioned error
 }
 
 } // namespace illum
