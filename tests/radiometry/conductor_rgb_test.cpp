@@ -75,7 +75,7 @@ TEST(ConductorRgb, EveryNamedMetalResolvesToAPlausibleIndex) {
 }
 
 TEST(ConductorRgb, ConstantSpectraReduceToGrey) {
-    SampledSpectrum two{{300, 900}, {2.5, 2.5}};
+    PiecewiseLinearSpectrum two{{300, 900}, {2.5, 2.5}};
     Color3 c = unbounded_spectrum_to_rgb(two);
     EXPECT_NEAR(c.r, 2.5f, 1e-5f);
     EXPECT_NEAR(c.g, 2.5f, 1e-5f);

@@ -21,7 +21,7 @@ std::unique_ptr<Scene> build(const std::string& world, const BuildOptions& o = {
 }
 
 TEST(Spectra, ConstantAndIlluminantNormalisation) {
-    SampledSpectrum one{{300, 900}, {0.7, 0.7}};
+    PiecewiseLinearSpectrum one{{300, 900}, {0.7, 0.7}};
     Color3 c = unbounded_spectrum_to_rgb(one);
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(c[i], 0.7f, 1e-4f);
     for (double t : {2000.0, 2856.0, 6500.0, 10000.0})

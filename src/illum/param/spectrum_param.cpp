@@ -18,7 +18,7 @@ Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind) {
             throw Error(p.loc, "blackbody needs a positive temperature");
         return blackbody_rgb(p.numbers[0]);
     }
-    SampledSpectrum s;
+    PiecewiseLinearSpectrum s;
     std::vector<double> v;
     if (p.strings.size() == 1 && p.numbers.empty()) {
         if (auto c = named_spectrum_rgb(p.strings[0])) {

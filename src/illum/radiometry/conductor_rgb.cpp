@@ -116,7 +116,7 @@ double fresnel_conductor_exact(double cos_theta, double eta, double k) {
 }
 
 Color3 reflectance_rgb(const MeasuredIndex& m, double cos_theta) {
-    SampledSpectrum f;
+    PiecewiseLinearSpectrum f;
     for (int l = kLambdaFirst; l <= kLambdaLast; ++l) {
         f.lambda.push_back(l);
         f.value.push_back(fresnel_conductor_exact(cos_theta, m.eta(l), m.k(l)));

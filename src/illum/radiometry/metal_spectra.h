@@ -12,7 +12,7 @@ namespace illum {
 
 struct MeasuredIndex {
     std::string_view element; // "Au", "CuZn", ...
-    SampledSpectrum eta, k;   // wavelength [nm] -> η, k; constant beyond the tabulated range
+    PiecewiseLinearSpectrum eta, k;   // wavelength [nm] -> η, k; constant beyond the tabulated range
 };
 
 // Every measured index, in the order Ag, Al, Au, Cu, CuZn, MgO, TiO2. Built once, on first use.

@@ -64,7 +64,7 @@ double blackbody(double lambda_nm, double kelvin) {
     return (2 * h * c * c) / (std::pow(l, 5) * (std::exp((h * c) / (l * kb * kelvin)) - 1));
 }
 
-double SampledSpectrum::operator()(double l) const {
+double PiecewiseLinearSpectrum::operator()(double l) const {
     if (lambda.empty()) return 0;
     if (l <= lambda.front()) return value.front();
     if (l >= lambda.back()) return value.back();
@@ -80,7 +80,7 @@ Color3 xyz_to_linear_srgb(double x, double y, double z) {
                   float(0.0556434 * x - 0.2040259 * y + 1.0572252 * z));
 }
 
-Color3 unbounded_spectrum_to_rgb(const SampledSpectrum& s) {
+Color3 unbounded_spectrum_to_rgb(const PiecewiseLinearSpectrum& s) {
     Xyz w = integrate([](double l) { return cie_d65(l); });
     Xyz c = integrate([&](double l) { return s(l) * cie_d65(l); });
     // Normalise by the white's own RGB so that a constant spectrum maps exactly to grey despite the
@@ -89,7 +89,7 @@ Color3 unbounded_spectrum_to_rgb(const SampledSpectrum& s) {
     return xyz_to_linear_srgb(c.x / w.y, c.y / w.y, c.z / w.y) / white;
 }
 
-Color3 illuminant_spectrum_to_rgb(const SampledSpectrum& s) {
+Color3 illuminant_spectrum_to_rgb(const PiecewiseLinearSpectrum& s) {
     Xyz w = integrate([](double l) { return cie_d65(l); });
     Xyz c = integrate([&](double l) { return s(l); });
     if (!(c.y > 0)) return Color3(0.0f);
@@ -98,7 +98,7 @@ Color3 illuminant_spectrum_to_rgb(const SampledSpectrum& s) {
 }
 
 Color3 blackbody_rgb(double kelvin) {
-    SampledSpectrum s;
+    PiecewiseLinearSpectrum s;
     for (double l = kLambdaMin; l <= kLambdaMax; l += 5) {
         s.lambda.push_back(l);
         s.value.push_back(blackbody(l, kelvin));

@@ -25,7 +25,7 @@ double cie_d65(double lambda_nm);
 double blackbody(double lambda_nm, double kelvin);
 
 // A spectrum given as samples (wavelength [nm], value), piecewise linear, constant beyond its ends.
-struct SampledSpectrum {
+struct PiecewiseLinearSpectrum {
     std::vector<double> lambda, value;
     double operator()(double lambda_nm) const;
 };
@@ -35,10 +35,10 @@ Color3 xyz_to_linear_srgb(double x, double y, double z);
 
 // A reflectance-like spectrum (reflectance, η, k) as RGB: XYZ of s·D65 normalised by Y of D65, then to
 // linear sRGB, so a constant spectrum c gives (c, c, c).
-Color3 unbounded_spectrum_to_rgb(const SampledSpectrum& s);
+Color3 unbounded_spectrum_to_rgb(const PiecewiseLinearSpectrum& s);
 // An emission spectrum as RGB with its luminance normalised to 1, as pbrt-v4 does for light spectra
 // ("radiance equivalent to 1 nit", scaled by the light's `scale`).
-Color3 illuminant_spectrum_to_rgb(const SampledSpectrum& s);
+Color3 illuminant_spectrum_to_rgb(const PiecewiseLinearSpectrum& s);
 Color3 blackbody_rgb(double kelvin); // luminance 1
 
 // pbrt-v4's named spectra. Metals: "metal-<El>-eta"/"metal-<El>-k" for Ag, Al, Au, Cu, CuZn, MgO, TiO2,
