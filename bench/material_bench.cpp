@@ -29,10 +29,11 @@ void BM_MaterialBsdf(benchmark::State& state, std::string material) {
     hit.n = hit.ns = Normal3f(0, 0, 1);
     hit.dpdu = Vector3f(1, 0, 0);
     hit.wo = Vector3f(0, 0, 1);
+    SampledWavelengths lambda = SampledWavelengths::rgb_mode();
     int i = 0;
     for (auto _ : state) {
         hit.uv = Point2f((i & 63) / 64.0f, ((i >> 6) & 63) / 64.0f);
-        BSDF b = m->bsdf(hit, arena);
+        BSDF b = m->bsdf(hit, lambda, arena);
         benchmark::DoNotOptimize(b);
         arena.reset();
         ++i;

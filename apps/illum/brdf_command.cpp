@@ -123,7 +123,7 @@ void add_brdf_command(CLI::App& app) {
         if (opt->mode != "radiance" && opt->mode != "importance")
             throw Error("--mode must be radiance or importance, got '" + opt->mode + "'");
         auto mode = opt->mode == "radiance" ? TransportMode::Radiance : TransportMode::Importance;
-        Color3 f = bxdf->f(wo, wi, mode).rgb;
+        Color3 f = bxdf->f(wo, wi, mode).rgb();
         float pdf = bxdf->pdf(wo, wi, mode).value;
         if (opt->json)
             fmt::print("{{\"f\": [{:.9g}, {:.9g}, {:.9g}], \"pdf\": {:.9g}}}\n", f.r, f.g, f.b, pdf);
@@ -279,15 +279,17 @@ void add_brdf_command(CLI::App& app) {
             name = opt->metal;
         }
         float eta = float(opt->eta);
+        SampledSpectrum sn(n), sk(k);
+        Color3 f0 = conductor_f0(sn, sk).rgb();
         fmt::print("# dielectric η = {:g}: F0 = {:.4f};  conductor {}: F0 = {:.4f} {:.4f} {:.4f}\n", eta,
-                   dielectric_f0(eta), name, conductor_f0(n, k).r, conductor_f0(n, k).g,
-                   conductor_f0(n, k).b);
+                   dielectric_f0(eta), name, f0.r, f0.g, f0.b);
         fmt::print("{:>5} | {:>8} {:>8} {:>9} | {:>24} {:>24} {:>27}\n", "θ", "exact", "schlick", "diff",
                    "conductor exact (RGB)", "schlick (RGB)", "diff (RGB)");
         for (int t = 0; t <= 90; t += 5) {
             float c = std::cos(t * kPi / 180);
             float fe = fresnel_dielectric(c, eta), fs = fresnel_dielectric_schlick(c, eta);
-            Color3 ce = fresnel_complex(c, n, k), cs = fresnel_schlick(c, conductor_f0(n, k)), d = cs - ce;
+            Color3 ce = fresnel_complex(c, sn, sk).rgb(), cs = fresnel_schlick(c, SampledSpectrum(f0)).rgb(),
+                   d = cs - ce;
             fmt::print("{:>5} | {:>8.4f} {:>8.4f} {:>+9.4f} | {:>7.4f} {:>7.4f} {:>7.4f}  {:>7.4f} {:>7.4f} "
                        "{:>7.4f}  "
                        "{:>+8.4f} {:>+8.4f} {:>+8.4f}\n",

@@ -36,6 +36,7 @@ struct RenderArgs {
     float exposure = 0;
     bool quiet = false;
     bool strict = false;
+    bool spectral = false;
 };
 
 void check_output_folder_only(const std::string& path) {
@@ -77,6 +78,8 @@ void write_stats(const std::string& path, const RenderArgs& args, const Scene& s
     j["threads"] = r.threads;
     j["seed"] = args.seed;
     j["nonfinite_samples"] = r.nonfinite_samples;
+    j["mode"] = args.spectral ? "spectral" : "rgb";
+    j["color_space"] = std::string(scene.color_space->name());
     std::string tmp = path + ".tmp";
     {
         std::ofstream out(tmp);
@@ -125,6 +128,7 @@ void run(const RenderArgs& args) {
     options.seed = args.seed;
     options.sampler = args.sampler.empty() ? scene->request.sampler : args.sampler;
     options.quiet = args.quiet;
+    options.spectral = args.spectral;
     RenderResult result = render(*scene, *integrator, options);
     if (result.nonfinite_samples > 0 && !args.quiet)
         fmt::print(stderr, "warning: {} samples were NaN, infinite or negative and were dropped\n",
@@ -172,6 +176,9 @@ void add_render_command(CLI::App& app) {
     cmd->add_option("--exposure", args->exposure, "Exposure in stops for PNG output");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress or warnings");
     cmd->add_flag("--strict", args->strict, "Unsupported scene features are errors, not warnings");
+    cmd->add_flag("--spectral", args->spectral,
+                  "Render with four sampled wavelengths per camera sample (hero wavelength sampling) instead "
+                  "of RGB");
     cmd->callback([args] { run(*args); });
 }
 

@@ -47,13 +47,13 @@ public:
     }
 
 private:
-    LambertBxDF base_{Color3(0.5f)};
+    LambertBxDF base_{SampledSpectrum(0.5f)};
     int kind_;
 };
 
 TEST(ChiSquare, AcceptsACorrectSampler) {
-    LambertBxDF lambert(Color3(0.5f));
-    PhongBxDF phong(Color3(0.3f), Color3(0.6f), 30);
+    LambertBxDF lambert(SampledSpectrum(0.5f));
+    PhongBxDF phong(SampledSpectrum(0.3f), SampledSpectrum(0.6f), 30);
     for (double t : {0.0, 45.0, 85.0}) {
         auto r = chi_square_test(lambert, direction_deg(t, 20), TransportMode::Radiance, 100000, 36, 72, 5);
         EXPECT_GT(r.p_value, 0.001) << r.detail;
@@ -87,7 +87,7 @@ public:
     std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode m) const override {
         auto s = base_.sample(wo, uc, u, m);
         if (s) {
-            s->f = Bsdf3(s->f.rgb * (1 + tilt_ * s->wi.x));
+            s->f = Bsdf3(s->f.s * (1 + tilt_ * s->wi.x));
             s->pdf_is_proportional = true;
         }
         return s;
@@ -97,7 +97,7 @@ public:
     }
 
 private:
-    LambertBxDF base_{Color3(0.5f)};
+    LambertBxDF base_{SampledSpectrum(0.5f)};
     float tilt_;
 };
 
@@ -110,7 +110,7 @@ TEST(WeightedHistogram, AcceptsConsistentSamplingAndRejectsATilt) {
                                          o.weighted_f_per_bin, 11);
         EXPECT_GT(r.p_value, 1e-3) << r.detail;
     }
-    CoatedDiffuseBxDF coated(DielectricInterface(1.5f, {0.2f, 0.2f}), LambertBxDF(Color3(0.7f)),
+    CoatedDiffuseBxDF coated(DielectricInterface(1.5f, {0.2f, 0.2f}), LambertBxDF(SampledSpectrum(0.7f)),
                              LayerMedium{}, 10, 1);
     auto r =
         weighted_histogram_test(coated, direction_deg(40, 20), TransportMode::Radiance, o.weighted_samples,

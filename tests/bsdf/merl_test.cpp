@@ -20,7 +20,7 @@ std::string temp_path(const char* name) { return ::testing::TempDir() + name; }
 
 TEST(Merl, RoundTripOfAnAnalyticGGX) {
     RoughConductorBxDF ggx(MicrofacetDistribution(MicrofacetType::GGX, 0.3f, 0.3f),
-                           Fresnel{kGoldEta, kGoldK});
+                           Fresnel{SampledSpectrum(kGoldEta), SampledSpectrum(kGoldK)});
     MerlTable table = MerlTable::from_bxdf(ggx);
     std::string path = temp_path("ggx.binary");
     table.write(path);
@@ -36,8 +36,8 @@ TEST(Merl, RoundTripOfAnAnalyticGGX) {
         Vector3f wo = sample_uniform_hemisphere({U(rng), U(rng)}),
                  wi = sample_uniform_hemisphere({U(rng), U(rng)});
         if (wo.z < 0.05f || wi.z < 0.05f) continue;
-        Color3 a = ggx.f(wo, wi, TransportMode::Radiance).rgb,
-               b = merl.f(wo, wi, TransportMode::Radiance).rgb;
+        Color3 a = ggx.f(wo, wi, TransportMode::Radiance).rgb(),
+               b = merl.f(wo, wi, TransportMode::Radiance).rgb();
         err += std::abs(a.g - b.g) * wi.z;
         ref += a.g * wi.z;
     }

@@ -19,7 +19,7 @@ namespace illum {
 namespace {
 
 TEST(Lambert, AlbedoIsRhoWithinMonteCarloError) {
-    LambertBxDF lambert(Color3(0.2f, 0.5f, 0.9f));
+    LambertBxDF lambert(SampledSpectrum(Color3(0.2f, 0.5f, 0.9f)));
     for (double t : {0.0, 30.0, 60.0, 80.0}) {
         Rgb64 mean, se;
         albedo_monte_carlo(lambert, direction_deg(t, 10), 20000, 7, &mean, &se);
@@ -57,7 +57,7 @@ TEST(Fresnel, ConductorWithZeroExtinctionIsDielectric) {
     Color3 f0 = fresnel_complex(1, kGoldEta, kGoldK);
     EXPECT_GT(f0.r, 0.9f);
     EXPECT_GT(f0.r, f0.b);
-    EXPECT_NEAR(f0.g, conductor_f0(kGoldEta, kGoldK).g, 1e-5f);
+    EXPECT_NEAR(f0.g, conductor_f0(SampledSpectrum(kGoldEta), SampledSpectrum(kGoldK))[1], 1e-5f);
     EXPECT_NEAR(fresnel_complex(0, kGoldEta, kGoldK).g, 1, 1e-5f); // grazing: 1
 }
 
@@ -86,10 +86,10 @@ TEST(Dielectric, ReflectionFractionIsFresnelAndWeightsAreExact) {
         ASSERT_TRUE(s);
         if (s->is_reflection()) {
             ++reflected;
-            EXPECT_NEAR(s->weight().r, 1, 1e-5f);
+            EXPECT_NEAR(s->weight()[0], 1, 1e-5f);
         } else {
             // Radiance mode scales refracted radiance by 1/η².
-            EXPECT_NEAR(s->weight().r, 1 / (1.5f * 1.5f), 1e-5f);
+            EXPECT_NEAR(s->weight()[0], 1 / (1.5f * 1.5f), 1e-5f);
             EXPECT_NEAR(s->eta, 1.5f, 1e-6f);
             // Snell: sin θt = sin θi / η.
             EXPECT_NEAR(sin_theta(s->wi), sin_theta(wo) / 1.5f, 1e-5f);
@@ -114,12 +114,12 @@ TEST(ThinDielectric, ReflectsMoreThanOneFaceAndIsLossless) {
 }
 
 TEST(CoatedDiffuse, WhiteBaseLosesOnlyTruncatedWalks) {
-    CoatedDiffuseBxDF coated(DielectricInterface(1.5f, {0, 0}), LambertBxDF(Color3(1)),
-                             LayerMedium{0, Color3(0.0f), 0}, 100, 1);
+    CoatedDiffuseBxDF coated(DielectricInterface(1.5f, {0, 0}), LambertBxDF(SampledSpectrum(1)),
+                             LayerMedium{0, SampledSpectrum(0.0f), 0}, 100, 1);
     Rgb64 mean, se;
     albedo_monte_carlo(coated, direction_deg(30, 0), 20000, 5, &mean, &se);
     EXPECT_NEAR(mean[0], 1, 4 * se[0] + 0.01);
-    CoatedDiffuseBxDF grey(DielectricInterface(1.5f, {0, 0}), LambertBxDF(Color3(0.5f)), LayerMedium{}, 100,
+    CoatedDiffuseBxDF grey(DielectricInterface(1.5f, {0, 0}), LambertBxDF(SampledSpectrum(0.5f)), LayerMedium{}, 100,
                            1);
     albedo_monte_carlo(grey, direction_deg(30, 0), 20000, 5, &mean, &se);
     EXPECT_LT(mean[0], 0.6);
@@ -171,7 +171,7 @@ TEST(Registry, RejectsBadInput) {
                  "cannot open MERL file '/nonexistent/x.binary': No such file or directory");
     // Constructors validate too.
     EXPECT_THROW(DielectricBxDF(-1.0f), Error);
-    EXPECT_THROW(ConductorBxDF(Color3(0), Color3(1)), Error);
+    EXPECT_THROW(ConductorBxDF(SampledSpectrum(0), SampledSpectrum(1)), Error);
 }
 
 } // namespace

@@ -134,9 +134,9 @@ TEST(Filter, WrongSamplingIsRejected) {
 
 TEST(Film, ResolvesTheWeightedMean) {
     Film film(2, 1);
-    film.add_sample(0, 0, Radiance3(1, 2, 3), 1);
-    film.add_sample(0, 0, Radiance3(3, 2, 1), 1);
-    film.add_sample(1, 0, Radiance3(4, 4, 4), 0.5f);
+    film.add_sample(0, 0, Color3(1, 2, 3), 1);
+    film.add_sample(0, 0, Color3(3, 2, 1), 1);
+    film.add_sample(1, 0, Color3(4, 4, 4), 0.5f);
     Image img = film.resolve();
     EXPECT_EQ(img(0, 0), Color3(2, 2, 2));
     EXPECT_EQ(img(1, 0), Color3(4, 4, 4));

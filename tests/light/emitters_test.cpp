@@ -32,7 +32,7 @@ PowerEstimate estimate_power(const Light& light, int n, std::uint64_t seed) {
     PowerEstimate e;
     for (int i = 0; i < n; ++i) {
         Point2f u1{rng.uniform_float(), rng.uniform_float()}, u2{rng.uniform_float(), rng.uniform_float()};
-        auto s = light.sample_le(u1, u2);
+        auto s = light.sample_le(u1, u2, SampledWavelengths::rgb_mode());
         for (int c = 0; c < 3; ++c) e.acc[c].add(s ? double(s->flux[c]) : 0.0);
         if (s) {
             // The flux is the documented ratio of the sample's own quantities.
@@ -60,14 +60,14 @@ TEST(SampleLe, DiffuseAreaLightOneAndTwoSided) {
     double area = kPiD * r * r; // from the disk's radius, not from the shape
     for (bool two : {false, true}) {
         DiffuseAreaLight light(&disk, l, two);
-        Color3 phi = l.rgb * float(kPiD * area * (two ? 2 : 1));
+        Color3 phi = l.rgb() * float(kPiD * area * (two ? 2 : 1));
         expect_power(estimate_power(light, 20000, 1), phi, two ? "two-sided disk" : "one-sided disk");
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(light.power()[c], phi[c], 1e-4 * phi[c]);
         // Photons leave from the emitting side.
         PCG32 rng(7);
         for (int i = 0; i < 1000; ++i) {
             auto s = light.sample_le({rng.uniform_float(), rng.uniform_float()},
-                                     {rng.uniform_float(), rng.uniform_float()});
+                                     {rng.uniform_float(), rng.uniform_float()}, SampledWavelengths::rgb_mode());
             ASSERT_TRUE(s);
             if (!two) {
                 EXPECT_GT(dot(s->ray.d, s->n), 0);
@@ -119,7 +119,7 @@ TEST(SampleLe, DirectionalLight) {
     // Every photon starts outside the scene's sphere and travels along -w.
     PCG32 rng(5);
     for (int i = 0; i < 100; ++i) {
-        auto s = light.sample_le({rng.uniform_float(), rng.uniform_float()}, {0.5f, 0.5f});
+        auto s = light.sample_le({rng.uniform_float(), rng.uniform_float()}, {0.5f, 0.5f}, SampledWavelengths::rgb_mode());
         ASSERT_TRUE(s);
         EXPECT_NEAR(dot(s->ray.d, -light.direction()), 1, 1e-5);
         EXPECT_GE(distance(s->ray.o, c), r * 0.999f);

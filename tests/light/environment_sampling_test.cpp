@@ -91,7 +91,7 @@ TEST(EnvSampling, ChiSquareAgainstPdf) {
         LightSampleContext ctx({0, 0, 0}, {}, {});
         int failed = 0, pdf_mismatches = 0;
         for (int i = 0; i < n; ++i) {
-            auto s = light.sample_li(ctx, {rng.uniform_float(), rng.uniform_float()});
+            auto s = light.sample_li(ctx, {rng.uniform_float(), rng.uniform_float()}, SampledWavelengths::rgb_mode());
             if (!s) {
                 ++failed;
                 continue;
@@ -160,7 +160,7 @@ TEST(EnvSampling, OneBrightTexel) {
         int hits = 0;
         const int n = 100000;
         for (int i = 0; i < n; ++i) {
-            auto s = light.sample_li({}, {rng.uniform_float(), rng.uniform_float()});
+            auto s = light.sample_li({}, {rng.uniform_float(), rng.uniform_float()}, SampledWavelengths::rgb_mode());
             ASSERT_TRUE(s);
             Point2f uv = env_uv(layout, s->wi);
             hits += int(uv.x * w) == bx && int(uv.y * h) == by;
@@ -173,10 +173,10 @@ TEST(EnvSampling, OneBrightTexel) {
 TEST(EnvSampling, ZeroEnergyMap) {
     ImageEnvironmentLight light(EnvironmentMap(Image(16, 8), EnvLayout::LatLong), Transform(), 1.0f);
     light.preprocess(Bounds3f{{0, 0, 0}, {1, 1, 1}});
-    EXPECT_EQ(light.power().luminance(), 0.0f);
-    EXPECT_FALSE(light.sample_li({}, {0.3f, 0.7f}));
+    EXPECT_EQ(light.power().rgb().luminance(), 0.0f);
+    EXPECT_FALSE(light.sample_li({}, {0.3f, 0.7f}, SampledWavelengths::rgb_mode()));
     EXPECT_NEAR(light.pdf_li({}, normalize(Vector3f{1, 0, 0.1f}), nullptr).value, 1 / (4 * kPi), 0.05f);
-    EXPECT_FALSE(light.sample_le({0.5f, 0.5f}, {0.5f, 0.5f}));
+    EXPECT_FALSE(light.sample_le({0.5f, 0.5f}, {0.5f, 0.5f}, SampledWavelengths::rgb_mode()));
     // Non-finite texels become 0.
     Image img(16, 8, Color3(1.0f));
     img(3, 3) = Color3(std::nanf(""), 1, 1);

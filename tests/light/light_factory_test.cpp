@@ -114,7 +114,7 @@ TEST(LightFactory, EmissionMayBeASpectrum) {
         Made m = make("LightSource \"point\" " + param + " \"float scale\" 2");
         EXPECT_TRUE(m.unused.empty()) << param;
         EXPECT_TRUE(m.warnings.empty()) << param;
-        return Color3(m.light->power().rgb / float(4 * kPi)); // Φ = 4π I
+        return Color3(m.light->power().rgb() / float(4 * kPi)); // Φ = 4π I
     };
     auto expect_color = [](Color3 got, Color3 want, const std::string& what) {
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-4f * std::max(1.0f, want[c])) << what;

@@ -115,7 +115,7 @@ TEST(ConductorRgb, FittedIndexReproducesSpectralReflectance) {
         EXPECT_LT(max_reflectance_error(m, *c, true), 0.01);
         EXPECT_LT(max_reflectance_error(m, *c), 0.05);
         // Normal incidence is matched exactly where it can be.
-        Color3 f0 = reflectance_rgb(m, 1.0), fit = conductor_f0(c->eta, c->k);
+        Color3 f0 = reflectance_rgb(m, 1.0), fit = conductor_f0(SampledSpectrum(c->eta), SampledSpectrum(c->k)).rgb();
         for (int ch = 0; ch < 3; ++ch)
             if (f0[ch] <= 1) {
                 EXPECT_NEAR(fit[ch], f0[ch], 1e-4);
@@ -154,7 +154,7 @@ TEST(ConductorRgb, NormalIncidenceMatchesPublishedValues) {
         for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(f0[ch], p.f0[ch], 0.02f);
     }
     const ConductorRgb* au = named_conductor_rgb("Au");
-    Color3 f = conductor_f0(au->eta, au->k);
+    Color3 f = conductor_f0(SampledSpectrum(au->eta), SampledSpectrum(au->k)).rgb();
     EXPECT_GT(f.r, 0.95f);
     EXPECT_GT(f.r, f.g);
     EXPECT_GT(f.g, f.b);

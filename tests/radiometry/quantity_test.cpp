@@ -28,7 +28,7 @@ static_assert(Addable<Radiance3, Radiance3>);
 static_assert(!Addable<Radiance3, Irradiance3>);
 static_assert(!Addable<Irradiance3, Biradiance3>); // same units, different meaning
 static_assert(!Addable<Power3, Intensity3>);
-static_assert(!Addable<Radiance3, Color3>);
+static_assert(!Addable<Radiance3, SampledSpectrum>);
 static_assert(!Addable<SolidAnglePdf, AreaPdf>);
 
 // Products and quotients carry units.
@@ -38,17 +38,17 @@ static_assert(std::is_same_v<Product<Bsdf3, Biradiance3>, Radiance3>);
 static_assert(std::is_same_v<Product<Irradiance3, Area>, Power3>);
 static_assert(std::is_same_v<Product<Intensity3, SolidAngle>, Power3>);
 static_assert(std::is_same_v<Quotient<Radiance3, SolidAnglePdf>, Irradiance3>);
-static_assert(std::is_same_v<Quotient<Bsdf3, SolidAnglePdf>, Color3>); // f / pdf is a weight
-static_assert(std::is_same_v<Quotient<Radiance3, Radiance3>, Color3>);
+static_assert(std::is_same_v<Quotient<Bsdf3, SolidAnglePdf>, SampledSpectrum>); // f / pdf is a weight
+static_assert(std::is_same_v<Quotient<Radiance3, Radiance3>, SampledSpectrum>);
 static_assert(std::is_same_v<Product<SolidAnglePdf, SolidAngle>, float>);
 // Scaling by a dimensionless reflectance keeps the units.
-static_assert(std::is_same_v<Product<Radiance3, Color3>, Radiance3>);
-static_assert(std::is_same_v<Product<Color3, Power3>, Power3>);
+static_assert(std::is_same_v<Product<Radiance3, SampledSpectrum>, Radiance3>);
+static_assert(std::is_same_v<Product<SampledSpectrum, Power3>, Power3>);
 static_assert(std::is_same_v<Product<Radiance3, float>, Radiance3>);
-// There is no implicit conversion between quantities, or from Color3.
+// There is no implicit conversion between quantities, or from SampledSpectrum.
 static_assert(!std::is_convertible_v<Radiance3, Irradiance3>);
-static_assert(!std::is_convertible_v<Color3, Radiance3>);
-static_assert(!std::is_convertible_v<Radiance3, Color3>);
+static_assert(!std::is_convertible_v<SampledSpectrum, Radiance3>);
+static_assert(!std::is_convertible_v<Radiance3, SampledSpectrum>);
 static_assert(!std::is_convertible_v<float, SolidAnglePdf>);
 
 // Multiple importance sampling weighs densities over one measure: the power heuristic takes two pdfs of the
@@ -83,30 +83,30 @@ static_assert(!std::is_assignable_v<SolidAnglePdf&, AreaPdf>);
 static_assert(!Addable<AreaPdf, Area>);
 
 // The throughput is dimensionless: a BSDF value [sr^-1] times |cos θ| over a solid-angle pdf [sr^-1].
-static_assert(std::is_same_v<decltype(throughput_weight(Bsdf3(1.0f), 1.0f, SolidAnglePdf(1))), Color3>);
-static_assert(std::is_same_v<Product<Bsdf3, Quotient<float, SolidAnglePdf>>, Color3>);
+static_assert(std::is_same_v<decltype(throughput_weight(Bsdf3(1.0f), 1.0f, SolidAnglePdf(1))), SampledSpectrum>);
+static_assert(std::is_same_v<Product<Bsdf3, Quotient<float, SolidAnglePdf>>, SampledSpectrum>);
 static_assert(std::is_same_v<Quotient<float, SolidAnglePdf>, SolidAngle>);
-// An area pdf in the throughput leaves units behind (m^2 sr^-1): not a weight a Color3 can take.
-static_assert(!std::is_same_v<Quotient<Bsdf3, AreaPdf>, Color3>);
-static_assert(!std::is_assignable_v<Color3&, Quotient<Bsdf3, AreaPdf>>);
+// An area pdf in the throughput leaves units behind (m^2 sr^-1): not a weight a SampledSpectrum can take.
+static_assert(!std::is_same_v<Quotient<Bsdf3, AreaPdf>, SampledSpectrum>);
+static_assert(!std::is_assignable_v<SampledSpectrum&, Quotient<Bsdf3, AreaPdf>>);
 // A pdf is not a throughput: adding one to a throughput, or scaling a throughput into a pdf, fails.
-static_assert(!Addable<Color3, SolidAnglePdf>);
-static_assert(!Addable<SolidAnglePdf, Color3>);
-static_assert(!Addable<Color3, AreaPdf>);
+static_assert(!Addable<SampledSpectrum, SolidAnglePdf>);
+static_assert(!Addable<SolidAnglePdf, SampledSpectrum>);
+static_assert(!Addable<SampledSpectrum, AreaPdf>);
 static_assert(!Addable<float, SolidAnglePdf>);
-static_assert(!std::is_assignable_v<Color3&, SolidAnglePdf>);
+static_assert(!std::is_assignable_v<SampledSpectrum&, SolidAnglePdf>);
 // What an estimate adds up is radiance: not irradiance, biradiance, a throughput or a pdf.
 static_assert(!Addable<Radiance3, Biradiance3>);
 static_assert(!Addable<Radiance3, SolidAnglePdf>);
 static_assert(!std::is_assignable_v<Radiance3&, Irradiance3>);
-static_assert(std::is_same_v<Product<Radiance3, Color3>, Radiance3>); // L β
+static_assert(std::is_same_v<Product<Radiance3, SampledSpectrum>, Radiance3>); // L β
 static_assert(std::is_same_v<decltype(reflected(Bsdf3(), Biradiance3(), 1.0f)), Radiance3>);
 static_assert(std::is_same_v<Product<Intensity3, SolidAngle>, Power3>); // Φ = 4π I
 static_assert(std::is_same_v<Product<Irradiance3, Area>, Power3>);      // Φ = M A
 static_assert(std::is_same_v<Product<Radiance3, Etendue>, Power3>);     // Φ = L G
 
 // Zero cost: the wrappers are the size of what they wrap.
-static_assert(sizeof(Radiance3) == sizeof(Color3));
+static_assert(sizeof(Radiance3) == sizeof(SampledSpectrum));
 static_assert(sizeof(SolidAnglePdf) == sizeof(float));
 static_assert(std::is_trivially_copyable_v<Radiance3>);
 

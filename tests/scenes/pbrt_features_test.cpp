@@ -68,17 +68,18 @@ Shape "sphere"
     hit.wo = {0, 0.6f, 0.8f};
     hit.uv = {0.25f, 0.25f};
     ScratchArena arena;
+    SampledWavelengths lambda = SampledWavelengths::rgb_mode();
     int empty = 0;
     for (const auto& m : s->materials) {
         arena.reset();
-        BSDF b = m->bsdf(hit, arena);
+        BSDF b = m->bsdf(hit, lambda, arena);
         if (!b) {
             ++empty;
             continue;
         }
         auto smp = b.sample(hit.wo, 0.3f, {0.4f, 0.6f});
         if (smp) {
-            EXPECT_TRUE(smp->f.rgb.is_finite());
+            EXPECT_TRUE(smp->f.rgb().is_finite());
         }
     }
     EXPECT_EQ(empty, 1); // interface
@@ -105,9 +106,10 @@ Shape "sphere"
     hit.dpdu = {1, 0, 0};
     hit.wo = {0, 0, 1};
     ScratchArena arena;
+    SampledWavelengths lambda = SampledWavelengths::rgb_mode();
     auto reflectance = [&](float u) {
         hit.uv = {u, 0.25f};
-        BSDF b = textured->materials.front()->bsdf(hit, arena);
+        BSDF b = textured->materials.front()->bsdf(hit, lambda, arena);
         auto s = b.sample(hit.wo, 0.0f, {0.5f, 0.5f}); // uc = 0 picks reflection
         EXPECT_TRUE(s && s->is_reflection());
         return s ? s->pdf.value : 0.0f; // the lobe's probability is the pane's reflectance
@@ -161,7 +163,7 @@ TEST(PbrtAreaLights, PowerGivesRadiancePerPrimitiveArea) {
               "Shape \"sphere\"\nAttributeEnd\n");
     ASSERT_EQ(s->lights.size(), 1u);
     Power3 p = s->lights.front()->power();
-    EXPECT_NEAR(p.rgb.g, 39.478f, 0.05f);
+    EXPECT_NEAR(p.rgb().g, 39.478f, 0.05f);
 }
 
 TEST(PbrtShapes, BilinearMeshCylinderAndInstances) {

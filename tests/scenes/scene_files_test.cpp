@@ -47,7 +47,7 @@ TEST_F(SceneFiles, FileNamesResolveOnceAgainstTheSceneFolder) {
     for (std::size_t i = 0; i < tex.pixel_count(); ++i) tex.data()[i] = Color3(0.5f);
     write_image(tex, (root_ / "sub" / "tex.png").string());
     write("sub/refl.spd", "400 0.25\n700 0.25\n");
-    MerlTable::from_bxdf(LambertBxDF(Color3(0.5f))).write((root_ / "sub" / "m.binary").string());
+    MerlTable::from_bxdf(LambertBxDF(SampledSpectrum(0.5f))).write((root_ / "sub" / "m.binary").string());
     // One scene per file, so each resolution is checked on its own.
     const char* uses[] = {
         R"(Texture "t" "spectrum" "imagemap" "string filename" "tex.png"

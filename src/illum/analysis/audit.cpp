@@ -185,7 +185,7 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
         for (int i = 0; i < o.pairs; ++i) {
             Vector3f a = sample_uniform_sphere({U(), U()}), b = sample_uniform_sphere({U(), U()});
             for (auto mode : {kRad, kImp}) {
-                Color3 f = bxdf.f(a, b, mode).rgb;
+                Color3 f = bxdf.f(a, b, mode).rgb();
                 float p = bxdf.pdf(a, b, mode).value;
                 if (!finite_nonneg(f) || !std::isfinite(p) || p < 0)
                     c.fail(fmt::format("f = ({}, {}, {}), pdf = {} at wo {} wi {}", f.r, f.g, f.b, p,
@@ -212,7 +212,7 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
             for (int i = 0; i < o.pairs * 4; ++i) {
                 Vector3f a = sample_uniform_hemisphere({U(), U()}), b = sample_uniform_hemisphere({U(), U()});
                 if (a.z < b.z) std::swap(a, b);
-                double fab = bxdf.f(a, b, kRad).luminance(), fba = bxdf.f(b, a, kRad).luminance();
+                double fab = bxdf.f(a, b, kRad).rgb().luminance(), fba = bxdf.f(b, a, kRad).rgb().luminance();
                 double d = fab - fba;
                 sd += d;
                 sd2 += d * d;
@@ -233,7 +233,7 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
             for (int i = 0; i < o.pairs; ++i) {
                 Vector3f a = sample_uniform_sphere({U(), U()}), b = sample_uniform_sphere({U(), U()});
                 if (!transmissive && !same_hemisphere(a, b)) b.z = -b.z;
-                Color3 fab = bxdf.f(a, b, kRad).rgb, fba = bxdf.f(b, a, kRad).rgb;
+                Color3 fab = bxdf.f(a, b, kRad).rgb(), fba = bxdf.f(b, a, kRad).rgb();
                 Color3 lhs = fab, rhs = fba;
                 if (!same_hemisphere(a, b)) {
                     // Generalised reciprocity f(wo,wi)/η_o² = f(wi,wo)/η_i² in radiance mode.
@@ -241,7 +241,7 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
                     lhs = fab / (ea * ea);
                     rhs = fba / (eb * eb);
                     // Adjointness: importance mode is the transpose of radiance mode.
-                    Color3 adj = bxdf.f(b, a, kImp).rgb;
+                    Color3 adj = bxdf.f(b, a, kImp).rgb();
                     for (int ch = 0; ch < 3; ++ch) {
                         double err = std::abs(fab[ch] - adj[ch]) / (std::max(fab[ch], adj[ch]) + 1e-4);
                         if (err > worst) {
@@ -293,7 +293,7 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
                     auto s = bxdf.sample(wo, uc, u, mode);
                     if (!s) continue;
                     ++n;
-                    Color3 w = s->weight();
+                    Color3 w = s->weight().rgb();
                     if (!finite_nonneg(w) || !(s->pdf.value > 0) || !is_finite(s->wi)) {
                         c.fail(fmt::format("bad sample at wo {}: weight ({}, {}, {}), pdf {}", dir_str(wo),
                                            w.r, w.g, w.b, s->pdf.value));
@@ -326,7 +326,7 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
                         continue;
                     }
                     if (traits.stochastic || s->pdf_is_proportional) continue;
-                    Color3 f = bxdf.f(wo, s->wi, mode).rgb;
+                    Color3 f = bxdf.f(wo, s->wi, mode).rgb();
                     float p = bxdf.pdf(wo, s->wi, mode).value;
                     float perr = std::abs(p - s->pdf.value) / std::max(p, s->pdf.value);
                     if (perr > 1e-3f)

@@ -82,11 +82,11 @@ std::unique_ptr<Scene> make_gallery_scene(int width, int height) {
     for (std::uint32_t t = 0; t < light_mesh->triangle_count(); ++t) {
         s.light_shapes.push_back(std::make_unique<TriangleShape>(light_mesh.get(), t));
         s.lights.push_back(std::make_unique<DiffuseAreaLight>(s.light_shapes.back().get(),
-                                                              Radiance3(6.0f, 5.8f, 5.4f), false));
+                                                              Emission(Color3(6.0f, 5.8f, 5.4f)), false));
         tri_lights.push_back(s.lights.back().get());
     }
     s.accelerator.add_mesh(std::move(light_mesh), s.materials.back().get(), std::move(tri_lights));
-    s.lights.push_back(std::make_unique<UniformEnvironmentLight>(Radiance3(0.25f, 0.28f, 0.33f)));
+    s.lights.push_back(std::make_unique<UniformEnvironmentLight>(Emission(Color3(0.25f, 0.28f, 0.33f))));
 
     // Camera: from the front and above, looking at the grid.
     Transform camera_from_world = Transform::look_at({0, -7.6f, 4.6f}, {0, 0.1f, 0.3f}, {0, 0, 1});

@@ -47,7 +47,7 @@ WeightedHistogramResult weighted_histogram_test(const BxDF& bxdf, Vector3f wo, T
         Point2f u(rng.uniform_float(), rng.uniform_float());
         auto s = bxdf.sample(wo, uc, u, mode);
         if (!s || s->is_specular() || !(s->pdf.value > 0) || s->wi.z * side <= 0) continue;
-        a[bin_of(s->wi)].add(scalar(s->weight()));
+        a[bin_of(s->wi)].add(scalar(s->weight().rgb()));
     }
 
     // B: stratified f |cos| over each bin. Bin (ic, ip) spans cos θ in [1 - (ic+1)/nc, 1 - ic/nc].
@@ -62,7 +62,7 @@ WeightedHistogramResult weighted_histogram_test(const BxDF& bxdf, Vector3f wo, T
                     double phi = 2 * kPiD * (ip + (sp + rng.uniform_double()) / k) / np;
                     double st = std::sqrt(std::max(0.0, 1 - c * c));
                     Vector3f wi(float(st * std::cos(phi)), float(st * std::sin(phi)), float(c * side));
-                    b[std::size_t(ic) * np + ip].add(scalar(bxdf.f(wo, wi, mode).rgb) * c);
+                    b[std::size_t(ic) * np + ip].add(scalar(bxdf.f(wo, wi, mode).rgb()) * c);
                 }
 
     // Per-bin z scores; sparse bins pooled.

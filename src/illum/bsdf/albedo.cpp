@@ -23,7 +23,7 @@ Rgb64 albedo_quadrature(const BxDF& bxdf, Vector3f wo, int n_theta, bool reflect
             for (int j = 0; j < n_phi; ++j) {
                 double p = (j + 0.5) * dp;
                 Vector3f wi(float(st * std::cos(p)), float(st * std::sin(p)), float(upper ? ct : -ct));
-                Color3 f = bxdf.f(wo, wi, mode).rgb;
+                Color3 f = bxdf.f(wo, wi, mode).rgb();
                 double w = ct * st * dt * dp;
                 for (int c = 0; c < 3; ++c) sum[c] += f[c] * w;
             }
@@ -43,7 +43,7 @@ void albedo_monte_carlo(const BxDF& bxdf, Vector3f wo, int samples, std::uint64_
         Point2f u(U(rng), U(rng));
         auto bs = bxdf.sample(wo, uc, u, mode);
         if (!bs || !(bs->pdf.value > 0)) continue;
-        Color3 w = bs->weight();
+        Color3 w = bs->weight().rgb();
         for (int c = 0; c < 3; ++c) {
             s[c] += w[c];
             s2[c] += double(w[c]) * w[c];

@@ -15,7 +15,7 @@ namespace illum {
 
 class BlinnPhongBxDF final : public BxDF {
 public:
-    BlinnPhongBxDF(Color3 kd, Color3 ks, float exponent) : kd_(kd), ks_(ks), n_(exponent) {
+    BlinnPhongBxDF(SampledSpectrum kd, SampledSpectrum ks, float exponent) : kd_(kd), ks_(ks), n_(exponent) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(kd, 0, 1), "blinn-phong", "kd must be in [0, 1], got " + str(kd));
         ILLUM_REQUIRE(in_range(ks, 0, 1), "blinn-phong", "ks must be in [0, 1], got " + str(ks));
@@ -56,7 +56,7 @@ public:
     };
 
 private:
-    Color3 kd_, ks_;
+    SampledSpectrum kd_, ks_;
     float n_, p_spec_;
 };
 

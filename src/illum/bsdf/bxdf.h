@@ -61,7 +61,7 @@ struct BSDFSample {
     bool is_reflection() const { return has_flag(flags, kReflection); }
     // The path throughput weight f |cos θi| / pdf (dimensionless), for a sample in the local shading
     // frame only (BxDF::sample); BSDF::sample returns wi in world space.
-    Color3 weight() const { return throughput_weight(f, std::abs(wi.z), pdf); }
+    SampledSpectrum weight() const { return throughput_weight(f, std::abs(wi.z), pdf); }
 };
 
 class BxDF {

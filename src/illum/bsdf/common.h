@@ -26,6 +26,19 @@ inline std::string str(float v) {
     return buf;
 }
 inline std::string str(Color3 c) { return str(c.r) + "," + str(c.g) + "," + str(c.b); }
+inline bool in_range(const SampledSpectrum& c, float lo, float hi) {
+    for (int i = 0; i < kSpectrumSamples; ++i)
+        if (!in_range(c[i], lo, hi)) return false;
+    return true;
+}
+inline bool all_positive(const SampledSpectrum& c) {
+    for (int i = 0; i < kSpectrumSamples; ++i)
+        if (!(c[i] > 0)) return false;
+    return true;
+}
+inline std::string str(const SampledSpectrum& c) {
+    return str(c[0]) + "," + str(c[1]) + "," + str(c[2]) + "," + str(c[3]);
+}
 } // namespace bsdf_detail
 
 // Throws illum::Error "model: what" unless ok. A macro so that the message (string concatenation) is built

@@ -14,9 +14,9 @@ inline constexpr Color3 kGoldK{3.983160f, 2.385721f, 1.603215f};
 
 class ConductorBxDF final : public BxDF {
 public:
-    ConductorBxDF(Color3 eta, Color3 k, FresnelMode mode = FresnelMode::Exact) : fresnel_{eta, k, mode} {
+    ConductorBxDF(SampledSpectrum eta, SampledSpectrum k, FresnelMode mode = FresnelMode::Exact) : fresnel_{eta, k, mode} {
         using namespace bsdf_detail;
-        ILLUM_REQUIRE(eta.r > 0 && eta.g > 0 && eta.b > 0, "conductor", "eta must be > 0, got " + str(eta));
+        ILLUM_REQUIRE(all_positive(eta), "conductor", "eta must be > 0, got " + str(eta));
         ILLUM_REQUIRE(in_range(k, 0, 1e4f), "conductor", "k must be >= 0, got " + str(k));
     }
     std::uint8_t flags() const override { return kSpecularReflection; }
@@ -25,7 +25,7 @@ public:
     std::optional<BSDFSample> sample(Vector3f wo, float, Point2f, TransportMode) const override {
         Vector3f wi = reflect_z(wo);
         if (wi.z == 0) return std::nullopt;
-        Color3 F = fresnel_(std::abs(wo.z));
+        SampledSpectrum F = fresnel_(std::abs(wo.z));
         return BSDFSample{wi, Bsdf3(F / std::abs(wi.z)), SolidAnglePdf(1), kSpecularReflection};
     }
     const Fresnel& fresnel() const { return fresnel_; }

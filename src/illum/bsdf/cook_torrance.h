@@ -20,7 +20,7 @@ namespace illum {
 
 class CookTorranceBxDF final : public BxDF {
 public:
-    CookTorranceBxDF(Color3 kd, Color3 ks, float m, Fresnel fresnel)
+    CookTorranceBxDF(SampledSpectrum kd, SampledSpectrum ks, float m, Fresnel fresnel)
         : kd_(kd), ks_(ks), fresnel_(fresnel), distrib_(MicrofacetType::Beckmann, m, m) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(kd, 0, 1), "cook-torrance", "kd must be in [0, 1], got " + str(kd));
@@ -28,8 +28,8 @@ public:
         ILLUM_REQUIRE(in_range(kd + ks, 0, 1), "cook-torrance", "kd + ks must be <= 1, got " + str(kd + ks));
         ILLUM_REQUIRE(in_range(m, 1e-3f, 1), "cook-torrance",
                       "roughness m must be in [0.001, 1], got " + str(m));
-        Color3 e = fresnel.eta;
-        ILLUM_REQUIRE(e.r > 0 && e.g > 0 && e.b > 0, "cook-torrance", "eta must be > 0, got " + str(e));
+        SampledSpectrum e = fresnel.eta;
+        ILLUM_REQUIRE(all_positive(e), "cook-torrance", "eta must be > 0, got " + str(e));
         ILLUM_REQUIRE(in_range(fresnel.k, 0, 1e4f), "cook-torrance", "k must be >= 0, got " + str(fresnel.k));
         p_spec_ = specular_lobe_probability(kd, ks);
     }
@@ -48,7 +48,7 @@ public:
     }
 
 private:
-    Color3 kd_, ks_;
+    SampledSpectrum kd_, ks_;
     Fresnel fresnel_;
     MicrofacetDistribution distrib_;
     float p_spec_ = 0;

@@ -7,6 +7,7 @@
 #include "illum/bsdf/registry.h"
 #include "illum/bsdf/shared_bxdf_material.h"
 #include "illum/param/spectrum_param.h"
+#include "illum/radiometry/named_spectra.h"
 #include "illum/radiometry/spectra.h"
 
 namespace illum {
@@ -38,11 +39,11 @@ public:
                 std::make_unique<CoatedDiffuseMaterial>(tex_.color(m_.params, "reflectance", Color3(0.5f)),
                                                         eta_param("eta", 1.5f), roughness(), layer()));
         if (type == "coatedconductor") {
-            float ieta = eta_param("interface.eta", 1.5f);
+            DispersiveScalar ieta = eta_param("interface.eta", 1.5f);
             RoughnessParams coat = roughness("interface.");
             const ConductorMaterial* c = conductor("conductor.");
-            return own(
-                std::make_unique<CoatedConductorMaterial>(ieta, coat, c, roughness("conductor."), layer()));
+            return own(std::make_unique<CoatedConductorMaterial>(std::move(ieta), coat, c, roughness("conductor."),
+                                                                 layer()));
         }
         if (type == "diffusetransmission")
             return own(std::make_unique<DiffuseTransmissionMaterial>(
@@ -76,14 +77,16 @@ private:
         return v;
     }
 
-    // A scalar index of refraction: float, or a spectrum reduced to its value at 550 nm (named glasses)
-    // or the mean of its RGB.
-    float eta_param(const std::string& name, float def) {
+    // A scalar index of refraction: float, or a spectrum, which disperses in spectral mode and in RGB mode
+    // is reduced to its value at 550 nm (named glasses) or the mean of its RGB.
+    DispersiveScalar eta_param(const std::string& name, float def) {
         const Param* p = m_.params.find(name);
-        if (!p) return def;
+        if (!p) return {def, nullptr};
         float eta = def;
+        std::shared_ptr<const DenselySampledSpectrum> spectrum;
         if (p->type == ParamType::Spectrum) {
             eta = spectrum_param_mean(*p, &tex_.diagnostics());
+            spectrum = std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Unbounded));
         } else if (p->type == ParamType::Texture) {
             p->used = true;
             tex_.diagnostics().unsupported(p->loc,
@@ -93,7 +96,7 @@ private:
         }
         if (!(eta > 0 && eta <= 100))
             throw Error(p->loc, fmt::format("\"{}\" must be in (0, 100], got {}", name, eta));
-        return eta;
+        return {eta, std::move(spectrum)};
     }
 
     RoughnessParams roughness(const std::string& prefix = "") {
@@ -109,17 +112,33 @@ private:
 
     const ConductorMaterial* conductor(const std::string& prefix) {
         const ColorTexture* refl = tex_.color(m_.params, "reflectance", std::nullopt);
-        const ColorTexture* eta = tex_.color(m_.params, prefix + "eta", std::nullopt);
-        const ColorTexture* k = tex_.color(m_.params, prefix + "k", std::nullopt);
-        if (refl && (eta || k))
+        SpectralColor eta = spectral_color(prefix + "eta", "metal-Cu-eta");
+        SpectralColor k = spectral_color(prefix + "k", "metal-Cu-k");
+        if (refl && (m_.params.has(prefix + "eta") || m_.params.has(prefix + "k")))
             tex_.diagnostics().unsupported(
                 m_.loc, "conductor with both \"reflectance\" and eta/k uses \"reflectance\"");
-        if (!eta) eta = tex_.constant(*named_spectrum_rgb("metal-Cu-eta"));
-        if (!k) k = tex_.constant(*named_spectrum_rgb("metal-Cu-k"));
-        auto c = std::make_unique<ConductorMaterial>(eta, k, refl, roughness(prefix));
+        auto c = std::make_unique<ConductorMaterial>(std::move(eta), std::move(k), refl, roughness(prefix));
         const ConductorMaterial* ptr = c.get();
         own(std::move(c));
         return ptr;
+    }
+
+    // A colour parameter that may be a spectrum (η, k of a conductor), or pbrt-v4's default named one.
+    SpectralColor spectral_color(const std::string& name, const char* default_named) {
+        SpectralColor c;
+        c.texture = tex_.color(m_.params, name, std::nullopt);
+        const Param* p = m_.params.find(name);
+        if (!c.texture) {
+            c.texture = tex_.constant(*named_spectrum_rgb(default_named));
+            c.spectrum = std::make_shared<DenselySampledSpectrum>(named_dense(default_named));
+        } else if (p && p->type == ParamType::Spectrum) {
+            c.spectrum = std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Unbounded));
+        }
+        return c;
+    }
+    static DenselySampledSpectrum named_dense(const char* name) {
+        PiecewiseLinearSpectrum s = *named_spectrum(name);
+        return DenselySampledSpectrum::from([&](double l) { return s(l); });
     }
 
     // The layer of a coated material: pbrt-v4's "thickness" (0.01), "albedo" (0), "g" (0), "maxdepth" (10)
@@ -181,7 +200,10 @@ private:
             AlbedoEstimate a = directional_albedo(*bxdf, {0, 0, 1}, spec.delta, 16, 4096, 1);
             albedo = Color3(float(a.mc[0]), float(a.mc[1]), float(a.mc[2]));
         }
-        if (!textured) return own(std::make_unique<SharedBxDFMaterial>(std::move(bxdf), albedo));
+        if (!textured)
+            return own(std::make_unique<SharedBxDFMaterial>(
+                std::move(bxdf), albedo,
+                spec.factory.textured ? spec.factory.textured(values, albedo, spec.normal_albedo) : nullptr));
         if (!spec.factory.textured)
             throw Error(m_.loc, fmt::format("material \"{}\" cannot have textured parameters", spec.name));
         return own(spec.factory.textured(std::move(values), albedo, spec.normal_albedo));

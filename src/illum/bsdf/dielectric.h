@@ -35,7 +35,7 @@ public:
         if (uc < pr / (pr + pt)) {
             Vector3f wi = reflect_z(wo);
             if (wi.z == 0) return std::nullopt;
-            return BSDFSample{wi, Bsdf3(Color3(R / std::abs(wi.z))), SolidAnglePdf(pr / (pr + pt)),
+            return BSDFSample{wi, Bsdf3(SampledSpectrum(R / std::abs(wi.z))), SolidAnglePdf(pr / (pr + pt)),
                               kSpecularReflection};
         }
         Vector3f wi;
@@ -43,7 +43,7 @@ public:
         if (!refract(wo, Vector3f(0, 0, 1), fresnel_.eta, &etap, &wi) || wi.z == 0) return std::nullopt;
         float ft = T / std::abs(wi.z);
         if (mode == TransportMode::Radiance) ft /= etap * etap;
-        BSDFSample s{wi, Bsdf3(Color3(ft)), SolidAnglePdf(pt / (pr + pt)), kSpecularTransmission};
+        BSDFSample s{wi, Bsdf3(SampledSpectrum(ft)), SolidAnglePdf(pt / (pr + pt)), kSpecularTransmission};
         s.eta = etap;
         return s;
     }

@@ -12,7 +12,7 @@ namespace illum {
 
 class DiffuseTransmissionBxDF final : public BxDF {
 public:
-    DiffuseTransmissionBxDF(Color3 reflectance, Color3 transmittance) : r_(reflectance), t_(transmittance) {
+    DiffuseTransmissionBxDF(SampledSpectrum reflectance, SampledSpectrum transmittance) : r_(reflectance), t_(transmittance) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(r_, 0, 1), "diffuse-transmission",
                       "reflectance must be in [0, 1], got " + str(r_));
@@ -46,7 +46,7 @@ public:
     }
 
 private:
-    Color3 r_, t_;
+    SampledSpectrum r_, t_;
     float p_r_ = 0.5f;
 };
 

@@ -14,6 +14,7 @@
 #include <cstdint>
 
 #include "illum/math/vector.h"
+#include "illum/radiometry/sampled_spectrum.h"
 #include "illum/radiometry/color.h"
 
 namespace illum {
@@ -55,9 +56,15 @@ inline float fresnel_complex(float cos_i, std::complex<float> eta_k) {
     return 0.5f * (rs + rp);
 }
 
+inline SampledSpectrum fresnel_complex(float cos_i, SampledSpectrum eta, SampledSpectrum k) {
+    SampledSpectrum f;
+    for (int i = 0; i < kSpectrumSamples; ++i) f[i] = fresnel_complex(cos_i, {eta[i], k[i]});
+    return f;
+}
+
+// The same for an RGB index (the tools' and tests' RGB mode).
 inline Color3 fresnel_complex(float cos_i, Color3 eta, Color3 k) {
-    return {fresnel_complex(cos_i, {eta.r, k.r}), fresnel_complex(cos_i, {eta.g, k.g}),
-            fresnel_complex(cos_i, {eta.b, k.b})};
+    return fresnel_complex(cos_i, SampledSpectrum(eta), SampledSpectrum(k)).rgb();
 }
 
 // Schlick's approximation given the reflectance at normal incidence.
@@ -66,18 +73,18 @@ inline float fresnel_schlick(float cos_i, float f0) {
     float m2 = m * m;
     return f0 + (1 - f0) * (m2 * m2 * m);
 }
-inline Color3 fresnel_schlick(float cos_i, Color3 f0) {
+inline SampledSpectrum fresnel_schlick(float cos_i, SampledSpectrum f0) {
     float m = std::clamp(1 - std::abs(cos_i), 0.0f, 1.0f);
     float m2 = m * m;
-    return f0 + (Color3(1) - f0) * (m2 * m2 * m);
+    return f0 + (SampledSpectrum(1) - f0) * (m2 * m2 * m);
 }
 
 // Normal-incidence reflectances: ((η-1)/(η+1))² for a dielectric, ((n-1)² + k²)/((n+1)² + k²) for a
 // conductor.
 inline float dielectric_f0(float eta) { return sqr((eta - 1) / (eta + 1)); }
-inline Color3 conductor_f0(Color3 eta, Color3 k) {
-    Color3 k2 = k * k;
-    return ((eta - Color3(1)) * (eta - Color3(1)) + k2) / ((eta + Color3(1)) * (eta + Color3(1)) + k2);
+inline SampledSpectrum conductor_f0(SampledSpectrum eta, SampledSpectrum k) {
+    SampledSpectrum k2 = k * k;
+    return ((eta - SampledSpectrum(1)) * (eta - SampledSpectrum(1)) + k2) / ((eta + SampledSpectrum(1)) * (eta + SampledSpectrum(1)) + k2);
 }
 
 // Schlick for a dielectric seen from either side: from the denser side the angle in the lighter medium
@@ -110,10 +117,10 @@ struct DielectricFresnel {
 // A conductor's (or, with k = 0, an opaque dielectric's) Fresnel term, exact or Schlick. Light always
 // arrives from outside.
 struct Fresnel {
-    Color3 eta{1.5f}, k{0};
+    SampledSpectrum eta{1.5f}, k{0};
     FresnelMode mode = FresnelMode::Exact;
-    Color3 f0() const { return conductor_f0(eta, k); }
-    Color3 operator()(float cos_i) const {
+    SampledSpectrum f0() const { return conductor_f0(eta, k); }
+    SampledSpectrum operator()(float cos_i) const {
         if (mode == FresnelMode::Schlick) return fresnel_schlick(cos_i, f0());
         return fresnel_complex(cos_i, eta, k);
     }

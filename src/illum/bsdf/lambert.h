@@ -8,7 +8,7 @@ namespace illum {
 
 class LambertBxDF final : public BxDF {
 public:
-    explicit LambertBxDF(Color3 reflectance) : reflectance_(reflectance) {}
+    explicit LambertBxDF(SampledSpectrum reflectance) : reflectance_(reflectance) {}
 
     std::uint8_t flags() const override { return reflectance_.is_black() ? kNone : kDiffuseReflection; }
 
@@ -30,10 +30,10 @@ public:
         return SolidAnglePdf(cosine_hemisphere_pdf(std::abs(wi.z)));
     }
 
-    Color3 reflectance() const { return reflectance_; }
+    SampledSpectrum reflectance() const { return reflectance_; }
 
 private:
-    Color3 reflectance_;
+    SampledSpectrum reflectance_;
 };
 
 } // namespace illum

@@ -57,7 +57,7 @@ public:
         : smooth_(std::max(alpha.x, alpha.y) < 1e-3f), flat_(fresnel.eta, fresnel.k, fresnel.mode),
           rough_(bsdf_detail::ggx_clamped(alpha), fresnel) {}
     ConductorInterface(RoughConductorBxDF rough)
-        : smooth_(false), flat_(Color3(1), Color3(0)), rough_(rough) {}
+        : smooth_(false), flat_(SampledSpectrum(1), SampledSpectrum(0)), rough_(rough) {}
     std::uint8_t flags() const override { return smooth_ ? flat_.flags() : rough_.flags(); }
     Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode mode) const override {
         return smooth_ ? Bsdf3() : rough_.f(wo, wi, mode);

@@ -77,7 +77,7 @@ inline bool usable(const std::optional<BSDFSample>& s) {
 // The layer between coat and base.
 struct LayerMedium {
     float thickness = 0.01f;
-    Color3 albedo{0.0f};
+    SampledSpectrum albedo{0.0f};
     float g = 0;
 };
 
@@ -131,8 +131,8 @@ public:
             if (!usable(wos)) continue;
             auto wis = coat_.sample(wi, r(), r2(), adjoint(mode), Lobes::Transmission);
             if (!usable(wis)) continue;
-            Color3 beta = wos->weight();
-            Color3 exit_weight = wis->f / wis->pdf; // without the cosine, which the event gives
+            SampledSpectrum beta = wos->weight();
+            SampledSpectrum exit_weight = wis->f / wis->pdf; // without the cosine, which the event gives
             Vector3f exit_dir = -wis->wi;           // the inner direction of travel that leaves along wi
             Vector3f w = wos->wi;                   // direction of travel, down into the layer
             float z = h;
@@ -218,7 +218,7 @@ public:
         // The walk's products of f |cos| and of pdfs over its events: their units depend on the number of
         // events, so they are carried as numbers and only their ratio (dimensionless) is meaningful; the
         // sample returns them as a BSDF value and a pdf proportional to the true ones.
-        Color3 f = bs->f.rgb * std::abs(bs->wi.z);
+        SampledSpectrum f = bs->f.s * std::abs(bs->wi.z);
         float pdf = bs->pdf.value;
         bool specular = bs->is_specular();
         Vector3f w = bs->wi;
@@ -254,7 +254,7 @@ public:
             std::optional<BSDFSample> s =
                 z == 0 ? base_.sample(-w, r(), r2(), mode) : coat_.sample(-w, r(), r2(), mode);
             if (!usable(s)) return std::nullopt;
-            f *= s->f.rgb;
+            f *= s->f.s;
             pdf *= s->pdf.value;
             specular = specular && s->is_specular();
             w = s->wi;
@@ -329,7 +329,7 @@ private:
     // upwards) that was sampled with density pdf_w (0: a delta, no MIS): beta f_coat(-w, wi) weighed
     // against the next-event estimate, whose density for the same inner direction is that of refracting
     // wi inwards (adjoint mode).
-    Bsdf3 through_rough_coat(Color3 beta, Vector3f w, Vector3f wi, SolidAnglePdf pdf_w,
+    Bsdf3 through_rough_coat(SampledSpectrum beta, Vector3f w, Vector3f wi, SolidAnglePdf pdf_w,
                              TransportMode mode) const {
         using namespace bsdf_detail;
         Bsdf3 fc = coat_.f(-w, wi, mode);

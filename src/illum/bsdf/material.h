@@ -1,10 +1,13 @@
-// Materials turn a surface hit into a BSDF, evaluating their textures there. The BxDF lives in the
+// Materials turn a surface hit into a BSDF, evaluating their textures there, at the path's wavelengths
+// (spectral mode: RGB inputs uplifted, spectra sampled; a dispersive one may terminate the secondary
+// wavelengths) or in RGB. The BxDF lives in the
 // per-thread scratch arena, so shading allocates nothing on the heap.
 #pragma once
 
 #include "illum/bsdf/bxdf.h"
 #include "illum/bsdf/lambert.h"
 #include "illum/geometry/surface_hit.h"
+#include "illum/radiometry/uplift.h"
 #include "illum/texture/texture.h"
 #include "illum/util/arena.h"
 
@@ -13,7 +16,7 @@ namespace illum {
 class Material {
 public:
     virtual ~Material() = default;
-    virtual BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const = 0;
+    virtual BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const = 0;
     // The reflectance a denoiser or the albedo pass shows (hemispherical albedo at normal incidence for
     // simple models; an estimate otherwise).
     virtual Color3 albedo(const SurfaceHit& hit) const = 0;
@@ -22,8 +25,8 @@ public:
 class DiffuseMaterial final : public Material {
 public:
     explicit DiffuseMaterial(const ColorTexture* reflectance) : reflectance_(reflectance) {}
-    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
-        Color3 r = clamp(reflectance_->evaluate(hit), 0.0f, 1.0f);
+    BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
+        SampledSpectrum r = uplift_albedo(reflectance_->evaluate(hit), lambda);
         return BSDF(arena.make<LambertBxDF>(r), hit.shading_frame());
     }
     Color3 albedo(const SurfaceHit& hit) const override {

@@ -109,7 +109,7 @@ MerlTable MerlTable::from_bxdf(const BxDF& bxdf) {
                 Vector3f wi = rotate_y(d, theta_h);
                 Vector3f wo = reflect(wi, h);
                 if (wi.z <= 0 || wo.z <= 0) continue;
-                Color3 f = bxdf.f(normalize(wo), normalize(wi), TransportMode::Radiance).rgb;
+                Color3 f = bxdf.f(normalize(wo), normalize(wi), TransportMode::Radiance).rgb();
                 int i = ip + kPhiD * (id + kThetaD * ih);
                 for (int c = 0; c < 3; ++c) t.data[i + c * std::size_t(kSize)] = f[c] / kScale[c];
             }
@@ -162,7 +162,7 @@ MerlBxDF::MerlBxDF(std::shared_ptr<const MerlTable> table) : table_(std::move(ta
 
 Bsdf3 MerlBxDF::f(Vector3f wo, Vector3f wi, TransportMode) const {
     if (!same_hemisphere(wo, wi)) return {};
-    return Bsdf3(table_->lookup(wo, wi));
+    return Bsdf3(SampledSpectrum(table_->lookup(wo, wi)));
 }
 
 std::optional<BSDFSample> MerlBxDF::sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const {

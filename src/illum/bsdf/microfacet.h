@@ -145,7 +145,7 @@ inline float vcavity_G(Vector3f wo, Vector3f wi, Vector3f h) {
 }
 
 // Picks between a diffuse and a specular lobe with probabilities proportional to their mean weights.
-inline float specular_lobe_probability(Color3 kd, Color3 ks) {
+inline float specular_lobe_probability(SampledSpectrum kd, SampledSpectrum ks) {
     float d = kd.average(), s = ks.average();
     return d + s > 0 ? s / (d + s) : 0.0f;
 }

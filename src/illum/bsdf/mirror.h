@@ -8,7 +8,7 @@ namespace illum {
 
 class MirrorBxDF final : public BxDF {
 public:
-    explicit MirrorBxDF(Color3 reflectance = Color3(1)) : reflectance_(reflectance) {
+    explicit MirrorBxDF(SampledSpectrum reflectance = SampledSpectrum(1)) : reflectance_(reflectance) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(reflectance, 0, 1), "mirror",
                       "reflectance must be in [0, 1], got " + str(reflectance));
@@ -23,7 +23,7 @@ public:
     }
 
 private:
-    Color3 reflectance_;
+    SampledSpectrum reflectance_;
 };
 
 } // namespace illum

@@ -14,7 +14,7 @@ namespace illum {
 class OrenNayarBxDF final : public BxDF {
 public:
     // sigma_degrees: standard deviation of the facet slope angle, in degrees, [0, 90].
-    OrenNayarBxDF(Color3 reflectance, float sigma_degrees) : reflectance_(reflectance) {
+    OrenNayarBxDF(SampledSpectrum reflectance, float sigma_degrees) : reflectance_(reflectance) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(reflectance, 0, 1), "oren-nayar",
                       "reflectance must be in [0, 1], got " + str(reflectance));
@@ -60,7 +60,7 @@ public:
     }
 
 private:
-    Color3 reflectance_;
+    SampledSpectrum reflectance_;
     float a_ = 1, b_ = 0;
 };
 

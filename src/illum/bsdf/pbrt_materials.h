@@ -16,6 +16,7 @@
 #include "illum/bsdf/material.h"
 #include "illum/bsdf/rough_conductor.h"
 #include "illum/bsdf/rough_dielectric.h"
+#include "illum/radiometry/densely_sampled_spectrum.h"
 
 namespace illum {
 
@@ -37,16 +38,40 @@ inline MicrofacetDistribution ggx(Vector2f a) {
     return MicrofacetDistribution(MicrofacetType::GGX, a.x, a.y);
 }
 
+// A scalar parameter that may be a spectrum (an index of refraction): its value for RGB mode and, when
+// given as a spectrum, its table, which spectral mode reads at the hero wavelength after terminating the
+// others (dispersion, as pbrt-v4's dielectrics do for a non-constant η).
+struct DispersiveScalar {
+    float value = 1;
+    std::shared_ptr<const DenselySampledSpectrum> spectrum;
+    float at(SampledWavelengths& lambda) const {
+        if (!spectrum || !lambda.spectral()) return value;
+        lambda.terminate_secondary();
+        return std::clamp((*spectrum)(lambda.hero()), 1e-3f, 100.0f);
+    }
+};
+
+// An Rgb parameter that may be a spectrum (a named metal's η or k): its texture, and its table when
+// given as a constant spectrum.
+struct SpectralColor {
+    const ColorTexture* texture = nullptr;
+    std::shared_ptr<const DenselySampledSpectrum> spectrum;
+    SampledSpectrum at(const SurfaceHit& hit, const SampledWavelengths& lambda) const {
+        if (spectrum && lambda.spectral()) return spectrum->sample(lambda);
+        return uplift_unbounded(texture->evaluate(hit), lambda);
+    }
+};
+
 // pbrt-v4 "conductor": complex index η + ik, or an artist's normal-incidence `reflectance` r mapped to
-// η = 1, k = 2 sqrt(r) / sqrt(1 - r) (so that the Fresnel reflectance at normal incidence is r).
+// η = 1, k = 2 sqrt(r) / sqrt(1 - r) (so that the Fresnel reflectance at normal incidence is r; in
+// spectral mode r is uplifted as a reflectance first, as pbrt-v4 does).
 class ConductorMaterial final : public Material {
 public:
-    ConductorMaterial(const ColorTexture* eta, const ColorTexture* k, const ColorTexture* reflectance,
-                      RoughnessParams rough)
-        : eta_(eta), k_(k), reflectance_(reflectance), rough_(rough) {}
-    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
-        Color3 eta, k;
-        index(hit, &eta, &k);
+    ConductorMaterial(SpectralColor eta, SpectralColor k, const ColorTexture* reflectance, RoughnessParams rough)
+        : eta_(std::move(eta)), k_(std::move(k)), reflectance_(reflectance), rough_(rough) {}
+    BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
+        SampledSpectrum eta, k;
+        index(hit, lambda, &eta, &k);
         Vector2f a = rough_.alpha(hit);
         const BxDF* b;
         if (a.x == 0)
@@ -56,48 +81,49 @@ public:
         return BSDF(b, hit.shading_frame());
     }
     Color3 albedo(const SurfaceHit& hit) const override {
-        Color3 eta, k;
-        index(hit, &eta, &k);
-        return conductor_f0(eta, k);
+        SampledWavelengths rgb = SampledWavelengths::rgb_mode();
+        SampledSpectrum eta, k;
+        index(hit, rgb, &eta, &k);
+        return conductor_f0(eta, k).rgb();
     }
-    void index(const SurfaceHit& hit, Color3* eta, Color3* k) const {
+    void index(const SurfaceHit& hit, const SampledWavelengths& lambda, SampledSpectrum* eta,
+               SampledSpectrum* k) const {
         if (reflectance_) {
-            Color3 r = clamp(reflectance_->evaluate(hit), 0.0f, 0.9999f);
-            *eta = Color3(1.0f);
-            *k = Color3(2 * std::sqrt(r.r) / std::sqrt(1 - r.r), 2 * std::sqrt(r.g) / std::sqrt(1 - r.g),
-                        2 * std::sqrt(r.b) / std::sqrt(1 - r.b));
+            SampledSpectrum r = clamp(uplift_albedo(reflectance_->evaluate(hit), lambda), 0.0f, 0.9999f);
+            *eta = SampledSpectrum(1.0f);
+            *k = 2 * sqrt(r) / sqrt(SampledSpectrum(1.0f) - r);
         } else {
-            *eta = eta_->evaluate(hit);
-            *k = clamp(k_->evaluate(hit), 0.0f, 1e4f);
-            eta->r = std::max(eta->r, 1e-4f);
-            eta->g = std::max(eta->g, 1e-4f);
-            eta->b = std::max(eta->b, 1e-4f);
+            *eta = eta_.at(hit, lambda);
+            *k = clamp(k_.at(hit, lambda), 0.0f, 1e4f);
+            for (int i = 0; i < kSpectrumSamples; ++i) (*eta)[i] = std::max((*eta)[i], 1e-4f);
         }
     }
 
 private:
-    const ColorTexture *eta_, *k_, *reflectance_;
+    SpectralColor eta_, k_;
+    const ColorTexture* reflectance_;
     RoughnessParams rough_;
 };
 
-// pbrt-v4 "dielectric": smooth or rough (GGX) interface of relative index η (a spectrally varying η is
-// reduced to one value at build time).
+// pbrt-v4 "dielectric": smooth or rough (GGX) interface of relative index η (a spectrally varying η
+// disperses in spectral mode and is reduced to one value in RGB mode).
 class DielectricMaterial final : public Material {
 public:
-    DielectricMaterial(float eta, RoughnessParams rough) : eta_(eta), rough_(rough) {}
-    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
+    DielectricMaterial(DispersiveScalar eta, RoughnessParams rough) : eta_(std::move(eta)), rough_(rough) {}
+    BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
         Vector2f a = rough_.alpha(hit);
+        float eta = eta_.at(lambda);
         const BxDF* b;
-        if (a.x == 0 || eta_ == 1)
-            b = arena.make<DielectricBxDF>(eta_);
+        if (a.x == 0 || eta == 1)
+            b = arena.make<DielectricBxDF>(eta);
         else
-            b = arena.make<RoughDielectricBxDF>(ggx(a), eta_);
+            b = arena.make<RoughDielectricBxDF>(ggx(a), eta);
         return BSDF(b, hit.shading_frame());
     }
     Color3 albedo(const SurfaceHit&) const override { return Color3(1.0f); }
 
 private:
-    float eta_;
+    DispersiveScalar eta_;
     RoughnessParams rough_;
 };
 
@@ -109,8 +135,8 @@ struct LayerParams {
     const FloatTexture* g = nullptr;
     int max_depth = 10, samples = 1;
 
-    LayerMedium medium(const SurfaceHit& hit) const {
-        return {std::max(0.0f, thickness->evaluate(hit)), clamp(albedo->evaluate(hit), 0.0f, 1.0f),
+    LayerMedium medium(const SurfaceHit& hit, const SampledWavelengths& lambda) const {
+        return {std::max(0.0f, thickness->evaluate(hit)), uplift_albedo(albedo->evaluate(hit), lambda),
                 std::clamp(g->evaluate(hit), -0.99f, 0.99f)};
     }
 };
@@ -119,12 +145,14 @@ struct LayerParams {
 // base, with the layer's medium between; layered.h.
 class CoatedDiffuseMaterial final : public Material {
 public:
-    CoatedDiffuseMaterial(const ColorTexture* reflectance, float eta, RoughnessParams coat, LayerParams layer)
-        : reflectance_(reflectance), eta_(eta), coat_(coat), layer_(layer) {}
-    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
-        Color3 r = clamp(reflectance_->evaluate(hit), 0.0f, 1.0f);
-        return BSDF(arena.make<CoatedDiffuseBxDF>(DielectricInterface(eta_, coat_.alpha(hit)), LambertBxDF(r),
-                                                  layer_.medium(hit), layer_.max_depth, layer_.samples),
+    CoatedDiffuseMaterial(const ColorTexture* reflectance, DispersiveScalar eta, RoughnessParams coat,
+                          LayerParams layer)
+        : reflectance_(reflectance), eta_(std::move(eta)), coat_(coat), layer_(layer) {}
+    BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
+        SampledSpectrum r = uplift_albedo(reflectance_->evaluate(hit), lambda);
+        return BSDF(arena.make<CoatedDiffuseBxDF>(DielectricInterface(eta_.at(lambda), coat_.alpha(hit)),
+                                                  LambertBxDF(r), layer_.medium(hit, lambda), layer_.max_depth,
+                                                  layer_.samples),
                     hit.shading_frame());
     }
     Color3 albedo(const SurfaceHit& hit) const override {
@@ -133,7 +161,7 @@ public:
 
 private:
     const ColorTexture* reflectance_;
-    float eta_;
+    DispersiveScalar eta_;
     RoughnessParams coat_;
     LayerParams layer_;
 };
@@ -142,23 +170,25 @@ private:
 // relative to the coat (η_c / η, k_c / η), as pbrt-v4 does.
 class CoatedConductorMaterial final : public Material {
 public:
-    CoatedConductorMaterial(float interface_eta, RoughnessParams interface,
+    CoatedConductorMaterial(DispersiveScalar interface_eta, RoughnessParams interface,
                             const ConductorMaterial* conductor, RoughnessParams conductor_rough,
                             LayerParams layer)
-        : eta_(interface_eta), interface_(interface), conductor_(conductor), rough_(conductor_rough),
+        : eta_(std::move(interface_eta)), interface_(interface), conductor_(conductor), rough_(conductor_rough),
           layer_(layer) {}
-    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
-        Color3 eta, k;
-        conductor_->index(hit, &eta, &k);
-        ConductorInterface base(Fresnel{eta / eta_, k / eta_, FresnelMode::Exact}, rough_.alpha(hit));
-        return BSDF(arena.make<CoatedConductorBxDF>(DielectricInterface(eta_, interface_.alpha(hit)), base,
-                                                    layer_.medium(hit), layer_.max_depth, layer_.samples),
+    BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
+        float ieta = eta_.at(lambda);
+        SampledSpectrum eta, k;
+        conductor_->index(hit, lambda, &eta, &k);
+        ConductorInterface base(Fresnel{eta / ieta, k / ieta, FresnelMode::Exact}, rough_.alpha(hit));
+        return BSDF(arena.make<CoatedConductorBxDF>(DielectricInterface(ieta, interface_.alpha(hit)), base,
+                                                    layer_.medium(hit, lambda), layer_.max_depth,
+                                                    layer_.samples),
                     hit.shading_frame());
     }
     Color3 albedo(const SurfaceHit& hit) const override { return conductor_->albedo(hit); }
 
 private:
-    float eta_;
+    DispersiveScalar eta_;
     RoughnessParams interface_;
     const ConductorMaterial* conductor_;
     RoughnessParams rough_;
@@ -169,10 +199,10 @@ class DiffuseTransmissionMaterial final : public Material {
 public:
     DiffuseTransmissionMaterial(const ColorTexture* r, const ColorTexture* t, float scale)
         : r_(r), t_(t), scale_(scale) {}
-    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
-        Color3 r = clamp(r_->evaluate(hit) * scale_, 0.0f, 1.0f),
-               t = clamp(t_->evaluate(hit) * scale_, 0.0f, 1.0f);
-        Color3 sum = r + t;
+    BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
+        SampledSpectrum r = uplift_albedo(r_->evaluate(hit) * scale_, lambda),
+                        t = uplift_albedo(t_->evaluate(hit) * scale_, lambda);
+        SampledSpectrum sum = r + t;
         float m = sum.max_component();
         if (m > 1) {
             r /= m;
@@ -192,7 +222,7 @@ private:
 // pbrt-v4 "interface": no surface at all; the integrators pass straight through an empty BSDF.
 class InterfaceMaterial final : public Material {
 public:
-    BSDF bsdf(const SurfaceHit&, ScratchArena&) const override { return BSDF(); }
+    BSDF bsdf(const SurfaceHit&, SampledWavelengths&, ScratchArena&) const override { return BSDF(); }
     Color3 albedo(const SurfaceHit&) const override { return Color3(0.0f); }
 };
 
@@ -211,9 +241,9 @@ public:
         float u = float(h >> 40) * 0x1p-24f;
         return t < u ? a_ : b_;
     }
-    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
+    BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
         const Material* m = choose(hit);
-        return m ? m->bsdf(hit, arena) : BSDF();
+        return m ? m->bsdf(hit, lambda, arena) : BSDF();
     }
     Color3 albedo(const SurfaceHit& hit) const override {
         float t = std::clamp(amount_->evaluate(hit), 0.0f, 1.0f);

@@ -14,7 +14,7 @@ namespace illum {
 
 class PhongBxDF final : public BxDF {
 public:
-    PhongBxDF(Color3 kd, Color3 ks, float exponent) : kd_(kd), ks_(ks), n_(exponent) {
+    PhongBxDF(SampledSpectrum kd, SampledSpectrum ks, float exponent) : kd_(kd), ks_(ks), n_(exponent) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(kd, 0, 1), "phong", "kd must be in [0, 1], got " + str(kd));
         ILLUM_REQUIRE(in_range(ks, 0, 1), "phong", "ks must be in [0, 1], got " + str(ks));
@@ -57,7 +57,7 @@ public:
     }
 
 private:
-    Color3 kd_, ks_;
+    SampledSpectrum kd_, ks_;
     float n_, p_spec_;
 };
 

@@ -154,11 +154,11 @@ std::vector<ParamSpec> layer_params(std::vector<ParamSpec> base) {
 template <class P>
 DielectricInterface coat_interface(const P& p) {
     float a = p.scalar("roughness"_p);
-    return DielectricInterface(p.scalar("eta"_p), Vector2f(a, a));
+    return DielectricInterface(p.dispersive_scalar("eta"_p), Vector2f(a, a));
 }
 template <class P>
 LayerMedium layer_medium(const P& p) {
-    return {p.scalar("thickness"_p), p.rgb("albedo"_p), p.scalar("g"_p)};
+    return {p.scalar("thickness"_p), p.spectrum("albedo"_p), p.scalar("g"_p)};
 }
 
 // A MERL table tabulated from a GGX gold rough conductor; `synthetic:ALPHA` in place of a file name.
@@ -169,7 +169,7 @@ std::shared_ptr<const MerlTable> synthetic_merl(float alpha) {
     auto& t = cache[alpha];
     if (!t) {
         RoughConductorBxDF ggx(MicrofacetDistribution(MicrofacetType::GGX, alpha, alpha),
-                               Fresnel{kGoldEta, kGoldK});
+                               Fresnel{SampledSpectrum(kGoldEta), SampledSpectrum(kGoldK)});
         t = std::make_shared<MerlTable>(MerlTable::from_bxdf(ggx));
     }
     return t;
@@ -223,7 +223,7 @@ std::vector<ModelSpec> build_models() {
          false,
          "",
          factory([](const auto& p, const auto& m) {
-             return m.template make<LambertBxDF>(p.rgb("reflectance"_p));
+             return m.template make<LambertBxDF>(p.spectrum("reflectance"_p));
          })});
     m.push_back({"oren-nayar",
                  "rough diffuse reflection (Oren & Nayar 1994, qualitative model)",
@@ -237,7 +237,7 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<OrenNayarBxDF>(p.rgb("reflectance"_p), p.scalar("sigma"_p));
+                     return m.template make<OrenNayarBxDF>(p.spectrum("reflectance"_p), p.scalar("sigma"_p));
                  })});
     m.push_back({"mirror",
                  "perfect specular reflection",
@@ -248,7 +248,7 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<MirrorBxDF>(p.rgb("reflectance"_p));
+                     return m.template make<MirrorBxDF>(p.spectrum("reflectance"_p));
                  })});
     m.push_back({"dielectric",
                  "smooth dielectric interface (glass): Fresnel reflection and refraction",
@@ -262,7 +262,7 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "eta",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<DielectricBxDF>(p.scalar("eta"_p), fresnel_mode(p));
+                     return m.template make<DielectricBxDF>(p.dispersive_scalar("eta"_p), fresnel_mode(p));
                  })});
     m.push_back({"thin-dielectric",
                  "thin dielectric pane: reflection and straight transmission with inter-reflection",
@@ -273,7 +273,7 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<ThinDielectricBxDF>(p.scalar("eta"_p), fresnel_mode(p));
+                     return m.template make<ThinDielectricBxDF>(p.dispersive_scalar("eta"_p), fresnel_mode(p));
                  })});
     m.push_back(
         {"conductor",
@@ -286,7 +286,7 @@ std::vector<ModelSpec> build_models() {
          false,
          "",
          factory([](const auto& p, const auto& m) {
-             return m.template make<ConductorBxDF>(p.rgb("eta"_p), p.rgb("k"_p), fresnel_mode(p));
+             return m.template make<ConductorBxDF>(p.spectrum("eta"_p), p.spectrum("k"_p), fresnel_mode(p));
          })});
     m.push_back({"phong",
                  "energy-normalised modified Phong (Lafortune & Willems 1994)",
@@ -301,7 +301,7 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<PhongBxDF>(p.rgb("kd"_p), p.rgb("ks"_p), p.scalar("exponent"_p));
+                     return m.template make<PhongBxDF>(p.spectrum("kd"_p), p.spectrum("ks"_p), p.scalar("exponent"_p));
                  })});
     m.push_back({"blinn-phong",
                  "Blinn-Phong with Ashikhmin-Shirley normalisation",
@@ -316,7 +316,7 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<BlinnPhongBxDF>(p.rgb("kd"_p), p.rgb("ks"_p),
+                     return m.template make<BlinnPhongBxDF>(p.spectrum("kd"_p), p.spectrum("ks"_p),
                                                             p.scalar("exponent"_p));
                  })});
     m.push_back(
@@ -335,8 +335,8 @@ std::vector<ModelSpec> build_models() {
          "",
          factory([](const auto& p, const auto& m) {
              return m.template make<TorranceSparrowBxDF>(
-                 p.rgb("kd"_p), p.rgb("ks"_p), p.scalar("sigma"_p),
-                 Fresnel{p.rgb("eta"_p), p.rgb("k"_p), fresnel_mode(p)});
+                 p.spectrum("kd"_p), p.spectrum("ks"_p), p.scalar("sigma"_p),
+                 Fresnel{p.spectrum("eta"_p), p.spectrum("k"_p), fresnel_mode(p)});
          })});
     m.push_back(
         {"cook-torrance",
@@ -353,8 +353,8 @@ std::vector<ModelSpec> build_models() {
          false,
          "",
          factory([](const auto& p, const auto& m) {
-             return m.template make<CookTorranceBxDF>(p.rgb("kd"_p), p.rgb("ks"_p), p.scalar("m"_p),
-                                                      Fresnel{p.rgb("eta"_p), p.rgb("k"_p), fresnel_mode(p)});
+             return m.template make<CookTorranceBxDF>(p.spectrum("kd"_p), p.spectrum("ks"_p), p.scalar("m"_p),
+                                                      Fresnel{p.spectrum("eta"_p), p.spectrum("k"_p), fresnel_mode(p)});
          })});
     {
         auto params = alpha_params(0.3);
@@ -376,7 +376,7 @@ std::vector<ModelSpec> build_models() {
                      "",
                      factory([](const auto& p, const auto& m) {
                          return m.template make<RoughConductorBxDF>(
-                             distribution(p), Fresnel{p.rgb("eta"_p), p.rgb("k"_p), fresnel_mode(p)});
+                             distribution(p), Fresnel{p.spectrum("eta"_p), p.spectrum("k"_p), fresnel_mode(p)});
                      })});
     }
     {
@@ -397,7 +397,7 @@ std::vector<ModelSpec> build_models() {
                      false,
                      "eta",
                      factory([](const auto& p, const auto& m) {
-                         return m.template make<RoughDielectricBxDF>(distribution(p), p.scalar("eta"_p),
+                         return m.template make<RoughDielectricBxDF>(distribution(p), p.dispersive_scalar("eta"_p),
                                                                      fresnel_mode(p));
                      })});
     }
@@ -417,7 +417,7 @@ std::vector<ModelSpec> build_models() {
                  "",
                  factory([](const auto& p, const auto& m) {
                      float a = p.scalar("alpha"_p);
-                     return m.template make<WardBxDF>(p.rgb("rho_d"_p), p.rgb("rho_s"_p),
+                     return m.template make<WardBxDF>(p.spectrum("rho_d"_p), p.spectrum("rho_s"_p),
                                                       p.has("alpha_x"_p) ? p.scalar("alpha_x"_p) : a,
                                                       p.has("alpha_y"_p) ? p.scalar("alpha_y"_p) : a);
                  })});
@@ -439,7 +439,7 @@ std::vector<ModelSpec> build_models() {
                  "",
                  factory([](const auto& p, const auto& m) {
                      return m.template make<CoatedDiffuseBxDF>(
-                         coat_interface(p), LambertBxDF(p.rgb("reflectance"_p)), layer_medium(p),
+                         coat_interface(p), LambertBxDF(p.spectrum("reflectance"_p)), layer_medium(p),
                          p.integer("max_depth"_p), p.integer("samples"_p), "coated-diffuse");
                  })});
     {
@@ -462,7 +462,7 @@ std::vector<ModelSpec> build_models() {
              "",
              factory([](const auto& p, const auto& m) {
                  RoughConductorBxDF base(distribution(p),
-                                         Fresnel{p.rgb("conductor_eta"_p), p.rgb("conductor_k"_p)});
+                                         Fresnel{p.spectrum("conductor_eta"_p), p.spectrum("conductor_k"_p)});
                  return m.template make<CoatedConductorBxDF>(coat_interface(p), ConductorInterface(base),
                                                              layer_medium(p), p.integer("max_depth"_p),
                                                              p.integer("samples"_p), "coated-conductor");
@@ -479,8 +479,8 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<DiffuseTransmissionBxDF>(p.rgb("reflectance"_p),
-                                                                     p.rgb("transmittance"_p));
+                     return m.template make<DiffuseTransmissionBxDF>(p.spectrum("reflectance"_p),
+                                                                     p.spectrum("transmittance"_p));
                  })});
     m.push_back({"merl",
                  "measured isotropic BRDF from a MERL .binary table",
@@ -521,7 +521,7 @@ std::vector<ModelSpec> build_models() {
          false,
          "",
          factory([](const auto& p, const auto& m) {
-             return m.template make<ToonBxDF>(p.rgb("reflectance"_p), p.rgb("ks"_p), p.integer("bands"_p),
+             return m.template make<ToonBxDF>(p.spectrum("reflectance"_p), p.spectrum("ks"_p), p.integer("bands"_p),
                                               p.scalar("highlight"_p));
          })});
     // Closed-form albedos at normal incidence: ρ for Lambert, R for the mirror, R + T for the sheet.
@@ -677,8 +677,10 @@ ModelArg model_arg(const ModelSpec& model, const ParamSpec& spec, const Param& p
         if (p.type == ParamType::Spectrum && spec.kind == ParamKind::Rgb) {
             Color3 c = spectrum_param_rgb(p, SpectrumKind::Unbounded);
             v = {c.r, c.g, c.b};
+            a.spectrum = std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(p, SpectrumKind::Unbounded));
         } else if (p.type == ParamType::Spectrum && spec.kind == ParamKind::Scalar) {
             v = {spectrum_param_mean(p, textures ? &textures->diagnostics() : nullptr)};
+            a.spectrum = std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(p, SpectrumKind::Unbounded));
         } else if (p.type == ParamType::Float || p.type == ParamType::Integer ||
                    (p.type == ParamType::RGB && spec.kind == ParamKind::Rgb)) {
             v = p.numbers;

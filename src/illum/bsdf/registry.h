@@ -16,6 +16,8 @@
 
 #include "illum/bsdf/bxdf.h"
 #include "illum/param/param_set.h"
+#include "illum/radiometry/densely_sampled_spectrum.h"
+#include "illum/radiometry/uplift.h"
 #include "illum/texture/texture.h"
 #include "illum/util/arena.h"
 
@@ -66,6 +68,9 @@ struct ModelArg {
     const ColorTexture* color = nullptr;  // a textured Rgb parameter
     const FloatTexture* scalar = nullptr; // a textured Scalar parameter
     Color3 constant;                      // Scalar, Rgb, Integer (in .r); a textured one's default
+    // A parameter given as a spectrum (a named metal's η, a glass's index): its table for spectral mode
+    // (`constant` holds its RGB or mean reduction for RGB mode).
+    std::shared_ptr<const DenselySampledSpectrum> spectrum;
     float lo = 0, hi = 0;
     ParamKind kind = ParamKind::Scalar;
     std::string text; // Choice, Path
@@ -85,11 +90,20 @@ struct ParamValues {
 // is a scan of a few integers: nothing is allocated, thrown or compared as text.
 class ModelArgs {
 public:
-    ModelArgs(const std::vector<ModelArg>& args, const TextureEvalContext* at) : args_(args), at_(at) {}
+    // w: the path's wavelengths (null: RGB mode, as for the tools and audits).
+    ModelArgs(const std::vector<ModelArg>& args, const TextureEvalContext* at, SampledWavelengths* w = nullptr)
+        : args_(args), at_(at), w_(w) {}
 
     bool has(ParamId id) const { return find(id) != nullptr; }
     float scalar(ParamId id) const;
     Color3 rgb(ParamId id) const;
+    // An Rgb parameter at the path's wavelengths: its table if given as a spectrum, else its RGB uplifted
+    // as a reflectance (range within [0, 1]) or as an unbounded value; the RGB itself in RGB mode.
+    SampledSpectrum spectrum(ParamId id) const;
+    // A Scalar parameter that may vary with wavelength (an index of refraction given as a spectrum): in
+    // spectral mode its value at the hero wavelength, the other wavelengths terminated (dispersion);
+    // the scalar otherwise.
+    float dispersive_scalar(ParamId id) const;
     int integer(ParamId id) const { return int(scalar(id)); }
     const std::string& str(ParamId id) const { return get(id).text; }
     // How many lookups named a parameter the model's spec does not have (a registry bug; tests assert 0).
@@ -110,6 +124,7 @@ private:
     }
     const std::vector<ModelArg>& args_;
     const TextureEvalContext* at_;
+    SampledWavelengths* w_;
 };
 
 // Defined here so that a textured material's constructor inlines them (they run at every hit).
@@ -141,6 +156,21 @@ inline Color3 ModelArgs::rgb(ParamId id) const {
     for (int i = 0; i < 3; ++i)
         if (sum[i] > 1) c[i] *= (1 - 1e-6f) / sum[i];
     return c;
+}
+
+inline SampledSpectrum ModelArgs::spectrum(ParamId id) const {
+    if (!w_ || !w_->spectral()) return SampledSpectrum(rgb(id));
+    const ModelArg& v = get(id);
+    if (v.spectrum && !v.color) return clamp(v.spectrum->sample(*w_), v.lo, v.hi);
+    Color3 c = rgb(id);
+    return v.hi <= 1 ? uplift_albedo(c, *w_) : uplift_unbounded(c, *w_);
+}
+
+inline float ModelArgs::dispersive_scalar(ParamId id) const {
+    const ModelArg& v = get(id);
+    if (!w_ || !w_->spectral() || !v.spectrum || v.scalar) return scalar(id);
+    w_->terminate_secondary();
+    return clamp_to_range((*v.spectrum)(w_->hero()), v.lo, v.hi);
 }
 
 class Material;

@@ -26,8 +26,8 @@ public:
         : distrib_(distrib), fresnel_(fresnel) {
         using namespace bsdf_detail;
         check_alpha("rough-conductor", distrib.alpha_x(), distrib.alpha_y());
-        Color3 e = fresnel.eta;
-        ILLUM_REQUIRE(e.r > 0 && e.g > 0 && e.b > 0, "rough-conductor", "eta must be > 0, got " + str(e));
+        SampledSpectrum e = fresnel.eta;
+        ILLUM_REQUIRE(all_positive(e), "rough-conductor", "eta must be > 0, got " + str(e));
         ILLUM_REQUIRE(in_range(fresnel.k, 0, 1e4f), "rough-conductor",
                       "k must be >= 0, got " + str(fresnel.k));
     }
@@ -41,7 +41,7 @@ public:
         if (length_squared(h) == 0) return {};
         h = normalize(h);
         if (h.z < 0) h = -h;
-        Color3 F = fresnel_(abs_dot(wo, h));
+        SampledSpectrum F = fresnel_(abs_dot(wo, h));
         return Bsdf3(F * (distrib_.D(h) * distrib_.G(wo, wi) / (4 * co * ci)));
     }
 

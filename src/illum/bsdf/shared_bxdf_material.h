@@ -1,5 +1,8 @@
-// A material whose parameters are all constant: one BxDF, built once and shared by every hit and thread
-// (BxDFs are immutable), so shading places nothing in the arena at all.
+// A material whose parameters are all constant: in RGB mode one BxDF, built once and shared by every hit
+// and thread (BxDFs are immutable), so shading places nothing in the arena at all. In spectral mode its
+// values depend on the path's wavelengths: the model is placed per hit (`spectral`, the same model with
+// the same constants), or, for a model that cannot be placed (the measured one, tabulated in RGB), the
+// shared BxDF's RGB values are uplifted as unbounded spectra (RgbUpliftBxDF).
 #pragma once
 
 #include <memory>
@@ -8,12 +11,38 @@
 
 namespace illum {
 
+// An RGB-valued BxDF seen at a path's wavelengths: its values uplifted, its directions and densities as
+// they are.
+class RgbUpliftBxDF final : public BxDF {
+public:
+    RgbUpliftBxDF(const BxDF* rgb, const SampledWavelengths& lambda) : rgb_(rgb), lambda_(lambda) {}
+    std::uint8_t flags() const override { return rgb_->flags(); }
+    Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode mode) const override {
+        return Bsdf3(uplift_unbounded(rgb_->f(wo, wi, mode).rgb(), lambda_));
+    }
+    std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override {
+        auto s = rgb_->sample(wo, uc, u, mode);
+        if (s) s->f = Bsdf3(uplift_unbounded(s->f.rgb(), lambda_));
+        return s;
+    }
+    SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode mode) const override {
+        return rgb_->pdf(wo, wi, mode);
+    }
+
+private:
+    const BxDF* rgb_;
+    SampledWavelengths lambda_;
+};
+
 class SharedBxDFMaterial final : public Material {
 public:
     // albedo: what the albedo pass shows (e.g. the directional albedo at normal incidence).
-    SharedBxDFMaterial(std::unique_ptr<BxDF> bxdf, Color3 albedo) : bxdf_(std::move(bxdf)), albedo_(albedo) {}
-    BSDF bsdf(const SurfaceHit& hit, ScratchArena&) const override {
-        return BSDF(bxdf_.get(), hit.shading_frame());
+    SharedBxDFMaterial(std::unique_ptr<BxDF> bxdf, Color3 albedo, std::unique_ptr<Material> spectral = nullptr)
+        : bxdf_(std::move(bxdf)), albedo_(albedo), spectral_(std::move(spectral)) {}
+    BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
+        if (!lambda.spectral()) return BSDF(bxdf_.get(), hit.shading_frame());
+        if (spectral_) return spectral_->bsdf(hit, lambda, arena);
+        return BSDF(arena.make<RgbUpliftBxDF>(bxdf_.get(), lambda), hit.shading_frame());
     }
     Color3 albedo(const SurfaceHit&) const override { return albedo_; }
     const BxDF& bxdf() const { return *bxdf_; }
@@ -21,6 +50,7 @@ public:
 private:
     std::unique_ptr<BxDF> bxdf_;
     Color3 albedo_;
+    std::unique_ptr<Material> spectral_;
 };
 
 } // namespace illum

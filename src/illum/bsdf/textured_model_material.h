@@ -18,8 +18,8 @@ public:
     TexturedModelMaterial(ParamValues values, Color3 albedo, ModelFactory::NormalAlbedo normal_albedo)
         : values_(std::move(values)), albedo_(albedo), normal_albedo_(normal_albedo) {}
 
-    BSDF bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
-        return BSDF(Place{}(ModelArgs(values_.args, &hit), arena), hit.shading_frame());
+    BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
+        return BSDF(Place{}(ModelArgs(values_.args, &hit, &lambda), arena), hit.shading_frame());
     }
     Color3 albedo(const SurfaceHit& hit) const override {
         return normal_albedo_ ? normal_albedo_(ModelArgs(values_.args, &hit)) : albedo_;

@@ -14,7 +14,7 @@ namespace illum {
 
 class ToonBxDF final : public BxDF {
 public:
-    ToonBxDF(Color3 reflectance, Color3 ks, int bands, float highlight_degrees)
+    ToonBxDF(SampledSpectrum reflectance, SampledSpectrum ks, int bands, float highlight_degrees)
         : rho_(reflectance), ks_(ks), bands_(float(bands)) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(reflectance, 0, 1), "toon",
@@ -33,7 +33,7 @@ public:
         float c = std::abs(wi.z);
         if (c < 1e-6f) return {};
         float lit = std::min(1.0f, std::ceil(bands_ * c) / bands_);
-        Color3 v = rho_ * (kInvPi * lit / c);
+        SampledSpectrum v = rho_ * (kInvPi * lit / c);
         Vector3f h = wo + wi;
         if (length_squared(h) > 0 && std::abs(normalize(h).z) >= cos_highlight_) v += ks_ * (kInvPi / c);
         return Bsdf3(v);
@@ -50,7 +50,7 @@ public:
     }
 
 private:
-    Color3 rho_, ks_;
+    SampledSpectrum rho_, ks_;
     float bands_ = 3, cos_highlight_ = 1;
 };
 

@@ -23,7 +23,7 @@ namespace illum {
 
 class TorranceSparrowBxDF final : public BxDF {
 public:
-    TorranceSparrowBxDF(Color3 kd, Color3 ks, float sigma_degrees, Fresnel fresnel)
+    TorranceSparrowBxDF(SampledSpectrum kd, SampledSpectrum ks, float sigma_degrees, Fresnel fresnel)
         : kd_(kd), ks_(ks), fresnel_(fresnel) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(kd, 0, 1), "torrance-sparrow", "kd must be in [0, 1], got " + str(kd));
@@ -32,8 +32,8 @@ public:
                       "kd + ks must be <= 1, got " + str(kd + ks));
         ILLUM_REQUIRE(in_range(sigma_degrees, 0.1f, 60), "torrance-sparrow",
                       "sigma must be in [0.1, 60] degrees, got " + str(sigma_degrees));
-        Color3 e = fresnel.eta;
-        ILLUM_REQUIRE(e.r > 0 && e.g > 0 && e.b > 0, "torrance-sparrow", "eta must be > 0, got " + str(e));
+        SampledSpectrum e = fresnel.eta;
+        ILLUM_REQUIRE(all_positive(e), "torrance-sparrow", "eta must be > 0, got " + str(e));
         ILLUM_REQUIRE(in_range(fresnel.k, 0, 1e4f), "torrance-sparrow",
                       "k must be >= 0, got " + str(fresnel.k));
         float sigma = sigma_degrees * kPi / 180;
@@ -71,7 +71,7 @@ public:
     }
 
 private:
-    Color3 kd_, ks_;
+    SampledSpectrum kd_, ks_;
     Fresnel fresnel_;
     float inv_two_sigma2_ = 1, inv_norm_ = 1, p_spec_ = 0;
     MicrofacetDistribution proposal_;

@@ -12,7 +12,7 @@ namespace illum {
 
 // D: any callable giving the facet density at a unit half vector on the +z side.
 template <class Distribution>
-Bsdf3 vcavity_microfacet_f(Vector3f wo, Vector3f wi, Color3 kd, Color3 ks, const Fresnel& fresnel,
+Bsdf3 vcavity_microfacet_f(Vector3f wo, Vector3f wi, SampledSpectrum kd, SampledSpectrum ks, const Fresnel& fresnel,
                            const Distribution& D) {
     if (!same_hemisphere(wo, wi)) return {};
     float co = std::abs(wo.z), ci = std::abs(wi.z);
@@ -21,7 +21,7 @@ Bsdf3 vcavity_microfacet_f(Vector3f wo, Vector3f wi, Color3 kd, Color3 ks, const
     h = normalize(h);
     if (h.z < 0) h = -h;
     Vector3f wof = wo.z < 0 ? -wo : wo, wif = wo.z < 0 ? -wi : wi;
-    Color3 F = fresnel(dot(wof, h));
+    SampledSpectrum F = fresnel(dot(wof, h));
     float spec = D(h) * vcavity_G(wof, wif, h) / (4 * co * ci);
     return Bsdf3(kd * kInvPi + ks * F * spec);
 }

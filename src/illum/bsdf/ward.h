@@ -17,7 +17,7 @@ namespace illum {
 
 class WardBxDF final : public BxDF {
 public:
-    WardBxDF(Color3 rho_d, Color3 rho_s, float alpha_x, float alpha_y)
+    WardBxDF(SampledSpectrum rho_d, SampledSpectrum rho_s, float alpha_x, float alpha_y)
         : rd_(rho_d), rs_(rho_s), distrib_(MicrofacetType::Beckmann, alpha_x, alpha_y) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(rho_d, 0, 1), "ward", "rho_d must be in [0, 1], got " + str(rho_d));
@@ -50,7 +50,7 @@ public:
     }
 
 private:
-    Color3 rd_, rs_;
+    SampledSpectrum rd_, rs_;
     MicrofacetDistribution distrib_;
     float p_spec_ = 0;
 };

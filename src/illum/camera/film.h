@@ -18,7 +18,8 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
 
-    void add_sample(int x, int y, Radiance3 l, float weight) {
+    // l: the sample's value in the output colour space (the sensor's conversion of its radiance).
+    void add_sample(int x, int y, Color3 l, float weight) {
         Pixel& px = pixels_[std::size_t(y) * width_ + x];
         for (int c = 0; c < 3; ++c) px.sum[c] += double(l[c]) * weight;
         px.weight += weight;

@@ -6,6 +6,7 @@
 // mesh emits P).
 #pragma once
 
+#include "illum/light/emission.h"
 #include "illum/param/entity.h"
 #include "illum/radiometry/quantity.h"
 #include "illum/util/diagnostics.h"
@@ -13,11 +14,11 @@
 namespace illum {
 
 struct AreaEmission {
-    Color3 radiance;
+    Emission radiance;
     bool two_sided = false;
     float power = -1;
     // The radiance of a primitive of the given area [m²].
-    Radiance3 for_area(float area) const;
+    Emission for_area(float area) const;
 };
 
 AreaEmission create_area_emission(const EntityDesc& area_light, Diagnostics& diag);

@@ -25,14 +25,15 @@ bool DiffuseAreaLight::masked(Point3f p, Normal3f n, Point2f uv) const {
     return float(hash(x, y, z) >> 40) * 0x1p-24f >= a;
 }
 
-std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContext& ctx, Point2f u) const {
+std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContext& ctx, Point2f u,
+                                                         const SampledWavelengths& lambda) const {
     auto ss = shape_->sample({ctx.p, ctx.p_error, ctx.n}, u);
     if (!ss || !(ss->pdf > SolidAnglePdf(0))) return std::nullopt;
     Vector3f d = ss->p - ctx.p;
     float d2 = length_squared(d);
     if (d2 == 0) return std::nullopt;
     Vector3f wi = d / std::sqrt(d2);
-    Radiance3 l = emitted(ss->n, -wi);
+    Radiance3 l = emitted(ss->n, -wi, lambda);
     if (l.is_black() || masked(ss->p, ss->n, ss->uv)) return std::nullopt;
     return LightLiSample{wi, l, biradiance(l, ss->pdf), ss->pdf, ss->p, ss->p_error, ss->n, false};
 }
@@ -44,10 +45,11 @@ SolidAnglePdf DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, Vector3f w
 }
 
 Power3 DiffuseAreaLight::power() const {
-    return lambertian_exitance(radiance_) * Area(shape_->area()) * (two_sided_ ? 2.0f : 1.0f);
+    return lambertian_exitance(Radiance3(radiance_.rgb_value())) * Area(shape_->area()) * (two_sided_ ? 2.0f : 1.0f);
 }
 
-std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2) const {
+std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2,
+                                                         const SampledWavelengths& lambda) const {
     AreaShapeSample ss = shape_->sample_area(u1);
     if (!(ss.pdf > AreaPdf(0)) || masked(ss.p, ss.n, ss.uv)) return std::nullopt;
     Vector3f n(ss.n);
@@ -69,7 +71,7 @@ std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2)
     SolidAnglePdf pdf_dir(cosine_hemisphere_pdf(cos_theta) * side_pmf);
     AreaPdf pdf_pos = ss.pdf;
     Point3f o = offset_ray_origin(ss.p, ss.p_error, ss.n, w);
-    Radiance3 l = emitted(ss.n, w);
+    Radiance3 l = emitted(ss.n, w, lambda);
     return LightLeSample{Ray{o, w}, ss.n, l, pdf_pos, pdf_dir, l * cos_theta / pdf_pos / pdf_dir};
 }
 

@@ -1,5 +1,7 @@
 #include "illum/light/image_environment_light.h"
 
+#include "illum/radiometry/uplift.h"
+
 #include "illum/math/warp.h"
 
 namespace illum {
@@ -37,11 +39,11 @@ void ImageEnvironmentLight::preprocess(const Bounds3f& scene_bounds) {
     scene_bounds.bounding_sphere(&scene_center_, &scene_radius_);
 }
 
-Radiance3 ImageEnvironmentLight::radiance(Vector3f w) const {
+Radiance3 ImageEnvironmentLight::radiance(Vector3f w, const SampledWavelengths& lambda) const {
     Vector3f d = light_from_world_(w);
     float len = length(d);
     if (!(len > 0)) return {};
-    return Radiance3(map_.lookup(d / len) * scale_);
+    return Radiance3(uplift_illuminant(map_.lookup(d / len), lambda) * scale_);
 }
 
 float ImageEnvironmentLight::pdf_light_space(Vector3f d) const {
@@ -51,7 +53,8 @@ float ImageEnvironmentLight::pdf_light_space(Vector3f d) const {
     return distribution_.pdf(uv) / j;
 }
 
-std::optional<LightLiSample> ImageEnvironmentLight::sample_li(const LightSampleContext&, Point2f u) const {
+std::optional<LightLiSample> ImageEnvironmentLight::sample_li(const LightSampleContext&, Point2f u,
+                                                              const SampledWavelengths& lambda) const {
     Vector3f wi;
     SolidAnglePdf pdf;
     switch (sampling_) {
@@ -72,7 +75,7 @@ std::optional<LightLiSample> ImageEnvironmentLight::sample_li(const LightSampleC
         break;
     }
     }
-    Radiance3 l = radiance(wi);
+    Radiance3 l = radiance(wi, lambda);
     if (l.is_black() || !(pdf > SolidAnglePdf(0)) || !pdf.is_finite()) return std::nullopt;
     return LightLiSample{wi, l, biradiance(l, pdf), pdf, {}, {}, {}, true};
 }
@@ -93,7 +96,7 @@ SolidAnglePdf ImageEnvironmentLight::pdf_li(const LightSampleContext&, Vector3f 
 }
 
 Power3 ImageEnvironmentLight::power() const {
-    return Power3(integral_ * (scale_ * kPi * scene_radius_ * scene_radius_));
+    return Power3(SampledSpectrum(integral_ * (scale_ * kPi * scene_radius_ * scene_radius_)));
 }
 
 float ImageEnvironmentLight::upper_hemisphere_irradiance() const {
@@ -108,7 +111,8 @@ float ImageEnvironmentLight::upper_hemisphere_irradiance() const {
     return float(e);
 }
 
-std::optional<LightLeSample> ImageEnvironmentLight::sample_le(Point2f u1, Point2f u2) const {
+std::optional<LightLeSample> ImageEnvironmentLight::sample_le(Point2f u1, Point2f u2,
+                                                              const SampledWavelengths& lambda) const {
     if (!(scene_radius_ > 0)) return std::nullopt;
     // The map's own distribution whatever the sampling mode: photons follow the light.
     float pdf_uv = 0;
@@ -117,7 +121,7 @@ std::optional<LightLeSample> ImageEnvironmentLight::sample_le(Point2f u1, Point2
     auto d = env_direction(map_.layout(), uv);
     if (!d || !(pdf_uv > 0) || !(j > 0)) return std::nullopt;
     Vector3f wi = normalize(world_from_light_(*d));
-    Radiance3 l = radiance(wi);
+    Radiance3 l = radiance(wi, lambda);
     if (l.is_black()) return std::nullopt;
     return disk_emission(scene_center_, scene_radius_, wi, u1, l, SolidAnglePdf(pdf_uv / j));
 }

@@ -33,17 +33,19 @@ public:
                           EnvSampling sampling = EnvSampling::Importance);
 
     void preprocess(const Bounds3f& scene_bounds) override;
-    std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f u) const override;
+    std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f u,
+                                           const SampledWavelengths& lambda) const override;
     SolidAnglePdf pdf_li(const LightSampleContext& ctx, Vector3f wi, const SurfaceHit* hit) const override;
-    Radiance3 le(const Ray& ray) const override { return radiance(ray.d); }
+    Radiance3 le(const Ray& ray, const SampledWavelengths& lambda) const override { return radiance(ray.d, lambda); }
     // π r² ∫ L dω with r the scene's bounding radius (the flux through the scene's disk).
     Power3 power() const override;
-    std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2) const override;
+    std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2, const SampledWavelengths& lambda) const override;
 
     // Radiance arriving from world direction w (towards the environment). Light::radiance (emission from
     // a surface point) stays visible beside it.
     using Light::radiance;
-    Radiance3 radiance(Vector3f w) const;
+    // Its texels' RGB, uplifted as an illuminant in spectral mode.
+    Radiance3 radiance(Vector3f w, const SampledWavelengths& lambda) const;
     // Illuminance-like integral ∫_{z>0} lum(L) cos θ dω over the upper hemisphere in light space
     // (before scale), for pbrt-v4's "illuminance" normalisation.
     float upper_hemisphere_irradiance() const;

@@ -13,6 +13,7 @@
 #include "illum/geometry/surface_hit.h"
 #include "illum/math/bounds.h"
 #include "illum/radiometry/quantity.h"
+#include "illum/radiometry/sampled_wavelengths.h"
 
 namespace illum {
 
@@ -69,18 +70,22 @@ public:
 
     // Called once the scene bounds are known (environment and directional lights need its radius).
     virtual void preprocess(const Bounds3f&) {}
-    virtual std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f u) const = 0;
+    // lambda: the path's wavelengths (the values come at them, or in RGB in RGB mode).
+    virtual std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f u,
+                                                   const SampledWavelengths& lambda) const = 0;
     // Density (per steradian at ctx) with which sample_li returns direction wi; for area lights `hit` is
     // where the ray along wi met the light.
     virtual SolidAnglePdf pdf_li(const LightSampleContext& ctx, Vector3f wi, const SurfaceHit* hit) const = 0;
     // Radiance leaving the light's surface at hit towards w (area lights).
-    virtual Radiance3 radiance(const SurfaceHit&, Vector3f) const { return {}; }
+    virtual Radiance3 radiance(const SurfaceHit&, Vector3f, const SampledWavelengths&) const { return {}; }
     // Radiance arriving along a ray that leaves the scene (environment lights).
-    virtual Radiance3 le(const Ray&) const { return {}; }
+    virtual Radiance3 le(const Ray&, const SampledWavelengths&) const { return {}; }
+    // In RGB (light selection by power does not depend on the mode).
     virtual Power3 power() const = 0;
     // Photon emission: an origin from u1 and a direction from u2 (see LightLeSample); nullopt when the
     // light emits nothing there. Infinite and directional lights need preprocess() first.
-    virtual std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2) const = 0;
+    virtual std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
+                                                   const SampledWavelengths& lambda) const = 0;
 
     // Position in the scene's light list, set by the scene (for selection pmfs).
     std::uint32_t index = 0;

@@ -23,25 +23,28 @@ constexpr float kDegrees = kPi / 180;
 // RGB multiplier as it is ("we should consider the RGB separately ... but we currently don't", its
 // SpectrumToPhotometric), so "rgb I" [10 10 10] with "power" [100] is 10 times brighter than [1 1 1]; scenes
 // are written for that behaviour, so illum keeps it.
-void normalise_to_power(const LightDesc& l, Color3& c, float power_per_unit) {
+void normalise_to_power(const LightDesc& l, Emission& c, float power_per_unit) {
     float power = l.params.get_float("power", -1);
     if (power > 0) {
         c *= power / power_per_unit;
     }
 }
 
-// A light's emission parameter ("I", "L") as RGB. pbrt-v4 reads it as a spectrum of any form: "rgb", or a
+// A light's emission parameter ("I", "L"), in RGB and as a spectrum. pbrt-v4 reads it as a spectrum of any
+// form: "rgb", or a
 // "spectrum" (named, such as "stdillum-A"; wavelength-value pairs; a file of such pairs) or "blackbody".
 // A spectrum is normalised to luminance 1 ("scale /= SpectrumToPhotometric(I)"), an RGB value is not
 // (pbrt-v4 normalises only its illuminant part); `scale` and `power` apply to either afterwards.
-std::optional<Color3> emission_rgb(const LightDesc& l, const std::string& name) {
+// Without the parameter: the colour space's illuminant of luminance 1, RGB (1, 1, 1).
+Emission emission(const LightDesc& l, const std::string& name) {
     const Param* p = l.params.find(name);
-    if (!p) return std::nullopt;
-    if (p->type == ParamType::RGB) return l.params.get_rgb(name);
+    if (!p) return Emission(Color3(1.0f));
+    if (p->type == ParamType::RGB) return Emission(*l.params.get_rgb(name));
     if (p->type != ParamType::Spectrum)
         l.params.fail(*p, fmt::format("parameter \"{}\" has type {}, expected rgb, spectrum or blackbody",
                                       name, to_string(p->type)));
-    return spectrum_param_rgb(*p, SpectrumKind::Illuminant);
+    return Emission(spectrum_param_rgb(*p, SpectrumKind::Illuminant),
+                    std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Illuminant)));
 }
 
 Vector3f unit_or_fail(const LightDesc& l, Vector3f v, const char* what) {
@@ -58,16 +61,14 @@ std::unique_ptr<Light> make_light(const LightDesc& l, Diagnostics& diag) {
     if (!std::isfinite(scale) || scale < 0)
         throw Error(l.loc, fmt::format("light \"{}\": bad scale {}", l.type, scale));
     if (l.type == "point") {
-        Color3 i(1.0f);
-        if (auto rgb = emission_rgb(l, "I")) i = *rgb;
+        Emission i = emission(l, "I");
         Point3f from = l.params.get_point3("from").value_or(Point3f{0, 0, 0});
         Point3f p = l.world_from_light(from);
         normalise_to_power(l, i, 4 * kPi); // Φ = 4π I
-        return std::make_unique<PointLight>(p, Intensity3(i * scale));
+        return std::make_unique<PointLight>(p, i * scale);
     }
     if (l.type == "spot") {
-        Color3 i(1.0f);
-        if (auto rgb = emission_rgb(l, "I")) i = *rgb;
+        Emission i = emission(l, "I");
         Point3f from = l.params.get_point3("from").value_or(Point3f{0, 0, 0});
         Point3f to = l.params.get_point3("to").value_or(Point3f{0, 0, 1});
         float cone = l.params.get_float("coneangle", 30);
@@ -82,18 +83,17 @@ std::unique_ptr<Light> make_light(const LightDesc& l, Diagnostics& diag) {
         float cos_end = std::cos(cone * kDegrees),
               cos_start = std::cos(std::max(0.0f, cone - delta) * kDegrees);
         normalise_to_power(l, i, 2 * kPi * ((1 - cos_start) + (cos_start - cos_end) / 2));
-        return std::make_unique<SpotLight>(p, axis, Intensity3(i * scale), cone * kDegrees, delta * kDegrees);
+        return std::make_unique<SpotLight>(p, axis, i * scale, cone * kDegrees, delta * kDegrees);
     }
     if (l.type == "distant") {
-        Color3 e(1.0f);
-        if (auto rgb = emission_rgb(l, "L")) e = *rgb;
+        Emission e = emission(l, "L");
         Point3f from = l.params.get_point3("from").value_or(Point3f{0, 0, 0});
         Point3f to = l.params.get_point3("to").value_or(Point3f{0, 0, 1});
         // Light travels from `from` towards `to`; the light lies in direction from - to.
         Vector3f w = unit_or_fail(l, l.world_from_light(from - to), "the direction from \"to\" to \"from\"");
         float illuminance = l.params.get_float("illuminance", -1);
         if (illuminance > 0) e *= illuminance; // pbrt-v4: the RGB multiplier is kept, as for "power"
-        return std::make_unique<DirectionalLight>(w, Irradiance3(e * scale));
+        return std::make_unique<DirectionalLight>(w, e * scale);
     }
     if (l.type == "infinite") {
         float illuminance = l.params.get_float("illuminance", -1);
@@ -154,17 +154,17 @@ std::unique_ptr<Light> make_light(const LightDesc& l, Diagnostics& diag) {
                                  fmt::format("environment map \"{}\" is black: it emits nothing", filename));
             return light;
         }
-        Color3 c(1.0f);
-        if (auto rgb = emission_rgb(l, "L")) c = *rgb;
+        Emission c = emission(l, "L");
         // A constant environment L gives illuminance π L on an upward surface.
         if (illuminance > 0) c *= illuminance / kPi; // pbrt-v4: the RGB multiplier is kept, as for "power"
         if (sampling != EnvSampling::Importance) {
             // Let the image light implement the sampling modes on a one-texel map.
-            Image img(2, 1, c);
+            // (A spectral L is then rendered by its RGB, uplifted.)
+            Image img(2, 1, c.rgb);
             return std::make_unique<ImageEnvironmentLight>(EnvironmentMap(std::move(img), EnvLayout::LatLong),
                                                            l.world_from_light, scale, sampling);
         }
-        return std::make_unique<UniformEnvironmentLight>(Radiance3(c * scale));
+        return std::make_unique<UniformEnvironmentLight>(c * scale);
     }
     if (l.type == "goniometric" || l.type == "projection") {
         diag.unsupported(l.loc, fmt::format("light \"{}\" is not supported yet and is skipped", l.type));

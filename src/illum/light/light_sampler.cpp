@@ -6,7 +6,7 @@ PowerLightSampler::PowerLightSampler(const std::vector<const Light*>& lights) : 
     if (lights_.empty()) return;
     std::vector<float> weights;
     for (const Light* l : lights_) {
-        float phi = l->power().luminance();
+        float phi = l->power().rgb().luminance();
         weights.push_back(std::isfinite(phi) && phi > 0 ? phi : 0.0f);
     }
     bool any = false;

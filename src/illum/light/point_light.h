@@ -1,6 +1,7 @@
 // An isotropic point source of intensity I [W/sr]: it delivers biradiance I / r² (total power 4π I).
 #pragma once
 
+#include "illum/light/emission.h"
 #include "illum/light/light.h"
 #include "illum/math/warp.h"
 
@@ -8,33 +9,34 @@ namespace illum {
 
 class PointLight final : public Light {
 public:
-    PointLight(Point3f position, Intensity3 intensity)
-        : Light(LightType::DeltaPosition), position_(position), intensity_(intensity) {}
+    PointLight(Point3f position, Emission intensity)
+        : Light(LightType::DeltaPosition), position_(position), intensity_(std::move(intensity)) {}
 
-    std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f) const override {
+    std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f,
+                                           const SampledWavelengths& lambda) const override {
         Vector3f d = position_ - ctx.p;
         float d2 = length_squared(d);
         if (d2 == 0) return std::nullopt;
         return LightLiSample{
-            d / std::sqrt(d2), {}, biradiance(intensity_, d2), SolidAnglePdf(1), position_, {}, {}, false};
+            d / std::sqrt(d2), {}, biradiance(intensity(lambda), d2), SolidAnglePdf(1), position_, {}, {}, false};
     }
     SolidAnglePdf pdf_li(const LightSampleContext&, Vector3f, const SurfaceHit*) const override {
         return SolidAnglePdf(0);
     }
     // Φ = ∫ I dω = 4π I.
-    Power3 power() const override { return intensity_ * SolidAngle(4 * kPi); }
+    Power3 power() const override { return Intensity3(intensity_.rgb_value()) * SolidAngle(4 * kPi); }
     // Uniform over the sphere of directions: flux = I / (1/4π) = 4π I for every photon.
-    std::optional<LightLeSample> sample_le(Point2f, Point2f u2) const override {
+    std::optional<LightLeSample> sample_le(Point2f, Point2f u2, const SampledWavelengths& lambda) const override {
         SolidAnglePdf pdf_dir(uniform_sphere_pdf());
         return LightLeSample{
-            Ray{position_, sample_uniform_sphere(u2)}, {}, {}, AreaPdf(1), pdf_dir, intensity_ / pdf_dir};
+            Ray{position_, sample_uniform_sphere(u2)}, {}, {}, AreaPdf(1), pdf_dir, intensity(lambda) / pdf_dir};
     }
     Point3f position() const { return position_; }
-    Intensity3 intensity() const { return intensity_; }
+    Intensity3 intensity(const SampledWavelengths& lambda) const { return Intensity3(intensity_.at(lambda)); }
 
 private:
     Point3f position_;
-    Intensity3 intensity_;
+    Emission intensity_;
 };
 
 } // namespace illum

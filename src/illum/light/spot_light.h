@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "illum/light/emission.h"
 #include "illum/light/light.h"
 #include "illum/math/frame.h"
 #include "illum/math/warp.h"
@@ -15,9 +16,9 @@ namespace illum {
 class SpotLight final : public Light {
 public:
     // axis: unit direction the light points to; angles in radians (0 < start <= end <= π).
-    SpotLight(Point3f position, Vector3f axis, Intensity3 intensity, float cone_angle, float cone_delta)
+    SpotLight(Point3f position, Vector3f axis, Emission intensity, float cone_angle, float cone_delta)
         : Light(LightType::DeltaPosition), position_(position), frame_(Frame::from_z(axis)),
-          intensity_(intensity) {
+          intensity_(std::move(intensity)) {
         cone_angle = std::clamp(cone_angle, 1e-6f, kPi);
         float start = std::clamp(cone_angle - cone_delta, 0.0f, cone_angle);
         cos_end_ = std::cos(cone_angle);
@@ -31,14 +32,17 @@ public:
         float t = (cos_theta - cos_end_) / (cos_start_ - cos_end_);
         return t * t * (3 - 2 * t);
     }
-    Intensity3 intensity(Vector3f w_world) const { return intensity_ * falloff(dot(w_world, frame_.n)); }
+    Intensity3 intensity(Vector3f w_world, const SampledWavelengths& lambda) const {
+        return Intensity3(intensity_.at(lambda)) * falloff(dot(w_world, frame_.n));
+    }
 
-    std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f) const override {
+    std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f,
+                                           const SampledWavelengths& lambda) const override {
         Vector3f d = position_ - ctx.p;
         float d2 = length_squared(d);
         if (d2 == 0) return std::nullopt;
         Vector3f wi = d / std::sqrt(d2);
-        Intensity3 i = intensity(-wi);
+        Intensity3 i = intensity(-wi, lambda);
         if (i.is_black()) return std::nullopt;
         return LightLiSample{wi, {}, biradiance(i, d2), SolidAnglePdf(1), position_, {}, {}, false};
     }
@@ -46,13 +50,14 @@ public:
         return SolidAnglePdf(0);
     }
     Power3 power() const override {
-        return intensity_ * SolidAngle(2 * kPi * ((1 - cos_start_) + (cos_start_ - cos_end_) / 2));
+        return Intensity3(intensity_.rgb_value()) *
+               SolidAngle(2 * kPi * ((1 - cos_start_) + (cos_start_ - cos_end_) / 2));
     }
     // Uniform within the cone θ <= θ_end: flux = I(θ) / p_dir.
-    std::optional<LightLeSample> sample_le(Point2f, Point2f u2) const override {
+    std::optional<LightLeSample> sample_le(Point2f, Point2f u2, const SampledWavelengths& lambda) const override {
         Vector3f w = frame_.to_world(sample_uniform_cone(u2, cos_end_));
         SolidAnglePdf pdf_dir(uniform_cone_pdf(cos_end_));
-        Intensity3 i = intensity(w);
+        Intensity3 i = intensity(w, lambda);
         return LightLeSample{Ray{position_, w}, {}, {}, AreaPdf(1), pdf_dir, i / pdf_dir};
     }
     Point3f position() const { return position_; }
@@ -63,7 +68,7 @@ public:
 private:
     Point3f position_;
     Frame frame_;
-    Intensity3 intensity_;
+    Emission intensity_;
     float cos_start_ = 1, cos_end_ = 0;
 };
 

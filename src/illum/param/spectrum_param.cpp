@@ -7,25 +7,40 @@
 #include <fstream>
 #include <sstream>
 
+#include "illum/radiometry/named_spectra.h"
 #include "illum/radiometry/spectra.h"
 
 namespace illum {
 
-Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind) {
+namespace {
+
+// A spectrum parameter as the scene gives it: a blackbody temperature, or a table (named, inline or
+// from a file). Throws illum::Error at its position for a bad spectrum or an unreadable file.
+struct GivenSpectrum {
+    double kelvin = 0; // > 0: a blackbody
+    PiecewiseLinearSpectrum table;
+    std::string name; // a named spectrum's name
+};
+
+GivenSpectrum given_spectrum(const Param& p) {
     p.used = true;
+    GivenSpectrum g;
     if (p.strings.size() == 1 && p.strings[0] == "blackbody") {
         if (p.numbers.empty() || !(p.numbers[0] > 0))
             throw Error(p.loc, "blackbody needs a positive temperature");
-        return blackbody_rgb(p.numbers[0]);
+        g.kelvin = p.numbers[0];
+        return g;
     }
-    PiecewiseLinearSpectrum s;
     std::vector<double> v;
     if (p.strings.size() == 1 && p.numbers.empty()) {
-        if (auto c = named_spectrum_rgb(p.strings[0])) {
-            if (kind == SpectrumKind::Unbounded) return *c;
-            float y = c->luminance(); // an illuminant is normalised to luminance 1, whatever its name
-            if (!(y > 0)) throw Error(p.loc, fmt::format("spectrum \"{}\" has no luminance", p.strings[0]));
-            return *c / y;
+        if (auto named = named_spectrum(p.strings[0])) {
+            g.table = std::move(*named);
+            g.name = p.strings[0];
+            return g;
+        }
+        if (named_spectrum_rgb(p.strings[0])) { // PROVISIONAL until every name has its table
+            g.name = p.strings[0];
+            return g;
         }
         const std::string& file = p.strings[0];
         std::ifstream in(file);
@@ -48,12 +63,45 @@ Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind) {
         v = p.numbers;
     }
     for (std::size_t i = 0; i < v.size(); i += 2) {
-        s.lambda.push_back(v[i]);
-        s.value.push_back(v[i + 1]);
+        g.table.lambda.push_back(v[i]);
+        g.table.value.push_back(v[i + 1]);
     }
-    for (std::size_t i = 1; i < s.lambda.size(); ++i)
-        if (!(s.lambda[i] > s.lambda[i - 1])) throw Error(p.loc, "spectrum wavelengths must increase");
-    return kind == SpectrumKind::Illuminant ? illuminant_spectrum_to_rgb(s) : unbounded_spectrum_to_rgb(s);
+    for (std::size_t i = 1; i < g.table.lambda.size(); ++i)
+        if (!(g.table.lambda[i] > g.table.lambda[i - 1]))
+            throw Error(p.loc, "spectrum wavelengths must increase");
+    return g;
+}
+
+} // namespace
+
+Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind) {
+    GivenSpectrum g = given_spectrum(p);
+    if (g.kelvin > 0) return blackbody_rgb(g.kelvin);
+    if (!g.name.empty())
+        if (auto c = named_spectrum_rgb(g.name)) {
+            if (kind == SpectrumKind::Unbounded) return *c;
+            float y = c->luminance(); // an illuminant is normalised to luminance 1, whatever its name
+            if (!(y > 0)) throw Error(p.loc, fmt::format("spectrum \"{}\" has no luminance", g.name));
+            return *c / y;
+        }
+    return kind == SpectrumKind::Illuminant ? illuminant_spectrum_to_rgb(g.table)
+                                            : unbounded_spectrum_to_rgb(g.table);
+}
+
+DenselySampledSpectrum spectrum_param_dense(const Param& p, SpectrumKind kind) {
+    GivenSpectrum g = given_spectrum(p);
+    DenselySampledSpectrum d =
+        g.kelvin > 0 ? DenselySampledSpectrum::from([&](double l) { return blackbody(l, g.kelvin); })
+                     : DenselySampledSpectrum::from([&](double l) { return g.table(l); });
+    if (kind == SpectrumKind::Illuminant) {
+        // pbrt-v4's "scale /= SpectrumToPhotometric(s)": luminance ∫ s ȳ dλ = 1 (the film's Y of it).
+        double y = 0;
+        for (int i = 0; i < DenselySampledSpectrum::kCount; ++i)
+            y += double(d.values()[std::size_t(i)]) * cie_y(DenselySampledSpectrum::kMin + i);
+        if (!(y > 0)) throw Error(p.loc, fmt::format("spectrum \"{}\" has no luminance", p.name));
+        d.scale(float(1 / y));
+    }
+    return d;
 }
 
 float spectrum_param_mean(const Param& p, Diagnostics* diag) {

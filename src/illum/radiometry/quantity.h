@@ -5,13 +5,14 @@
 // irradiance [W m^-2], a BRDF [sr^-1] x irradiance is radiance, and radiance + irradiance does not
 // compile. A tag separates quantities that share units but not meaning: biradiance (intensity / r^2,
 // before the cosine; McGuire's Graphics Codex) has the units of irradiance but is not one; a product
-// drops the tag. Everything is a thin wrapper over Color3 or float: zero cost at run time.
+// drops the tag. Everything is a thin wrapper over SampledSpectrum (RGB or four wavelengths, by the path's mode) or float:
+// zero cost at run time.
 #pragma once
 
 #include <cmath>
 #include <type_traits>
 
-#include "illum/radiometry/color.h"
+#include "illum/radiometry/sampled_spectrum.h"
 
 namespace illum {
 
@@ -83,38 +84,39 @@ constexpr auto operator/(Scalar<W1, M1, S1, T1> a, Scalar<W2, M2, S2, T2> b) {
     return detail::make_scalar<W1 - W2, M1 - M2, S1 - S2>(a.value / b.value);
 }
 
-// An RGB quantity with units W^w m^m sr^s.
+// A spectral quantity with units W^w m^m sr^s: its values at a path's wavelengths (or its RGB in RGB mode).
 template <int W, int M, int S, class Tag = NoTag>
 struct Quantity3 {
-    Color3 rgb;
+    SampledSpectrum s;
     constexpr Quantity3() = default;
-    constexpr explicit Quantity3(Color3 c) : rgb(c) {}
-    constexpr explicit Quantity3(float v) : rgb(v) {}
-    constexpr Quantity3(float r, float g, float b) : rgb(r, g, b) {}
+    constexpr explicit Quantity3(SampledSpectrum v) : s(v) {}
+    constexpr explicit Quantity3(float v) : s(v) {}
+    // RGB mode's (r, g, b).
+    constexpr Quantity3(float r, float g, float b) : s(Color3(r, g, b)) {}
 
-    constexpr float operator[](int i) const { return rgb[i]; }
-    constexpr Quantity3 operator+(Quantity3 o) const { return Quantity3(rgb + o.rgb); }
-    constexpr Quantity3 operator-(Quantity3 o) const { return Quantity3(rgb - o.rgb); }
-    constexpr Quantity3 operator*(float s) const { return Quantity3(rgb * s); }
-    constexpr Quantity3 operator/(float s) const { return Quantity3(rgb / s); }
+    constexpr float operator[](int i) const { return s[i]; }
+    constexpr Quantity3 operator+(Quantity3 o) const { return Quantity3(s + o.s); }
+    constexpr Quantity3 operator-(Quantity3 o) const { return Quantity3(s - o.s); }
+    constexpr Quantity3 operator*(float k) const { return Quantity3(s * k); }
+    constexpr Quantity3 operator/(float k) const { return Quantity3(s / k); }
     // Scaling by a dimensionless reflectance or throughput keeps the units.
-    constexpr Quantity3 operator*(Color3 c) const { return Quantity3(rgb * c); }
+    constexpr Quantity3 operator*(SampledSpectrum c) const { return Quantity3(s * c); }
     Quantity3& operator+=(Quantity3 o) { return *this = *this + o; }
-    Quantity3& operator*=(float s) { return *this = *this * s; }
-    Quantity3& operator*=(Color3 c) { return *this = *this * c; }
+    Quantity3& operator*=(float k) { return *this = *this * k; }
+    Quantity3& operator*=(SampledSpectrum c) { return *this = *this * c; }
     constexpr bool operator==(const Quantity3&) const = default;
 
-    constexpr bool is_black() const { return rgb.is_black(); }
-    constexpr float max_component() const { return rgb.max_component(); }
-    constexpr float luminance() const { return rgb.luminance(); }
-    constexpr float average() const { return rgb.average(); }
-    bool is_finite() const { return rgb.is_finite(); }
-    bool has_negative() const { return rgb.has_negative(); }
+    constexpr bool is_black() const { return s.is_black(); }
+    constexpr float max_component() const { return s.max_component(); }
+    // RGB mode: the colour in lanes 0-2 (a film value after its conversion to the output space).
+    constexpr Color3 rgb() const { return s.rgb(); }
+    bool is_finite() const { return s.is_finite(); }
+    bool has_negative() const { return s.has_negative(); }
 };
 
 namespace detail {
 template <int W, int M, int S>
-constexpr auto make_quantity3(Color3 c) {
+constexpr auto make_quantity3(SampledSpectrum c) {
     if constexpr (W == 0 && M == 0 && S == 0)
         return c;
     else
@@ -127,20 +129,20 @@ constexpr Quantity3<W, M, S, T> operator*(float s, Quantity3<W, M, S, T> q) {
     return q * s;
 }
 template <int W, int M, int S, class T>
-constexpr Quantity3<W, M, S, T> operator*(Color3 c, Quantity3<W, M, S, T> q) {
+constexpr Quantity3<W, M, S, T> operator*(SampledSpectrum c, Quantity3<W, M, S, T> q) {
     return q * c;
 }
 template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
 constexpr auto operator*(Quantity3<W1, M1, S1, T1> a, Quantity3<W2, M2, S2, T2> b) {
-    return detail::make_quantity3<W1 + W2, M1 + M2, S1 + S2>(a.rgb * b.rgb);
+    return detail::make_quantity3<W1 + W2, M1 + M2, S1 + S2>(a.s * b.s);
 }
 template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
 constexpr auto operator/(Quantity3<W1, M1, S1, T1> a, Quantity3<W2, M2, S2, T2> b) {
-    return detail::make_quantity3<W1 - W2, M1 - M2, S1 - S2>(a.rgb / b.rgb);
+    return detail::make_quantity3<W1 - W2, M1 - M2, S1 - S2>(a.s / b.s);
 }
 template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
 constexpr auto operator*(Quantity3<W1, M1, S1, T1> a, Scalar<W2, M2, S2, T2> b) {
-    return detail::make_quantity3<W1 + W2, M1 + M2, S1 + S2>(a.rgb * b.value);
+    return detail::make_quantity3<W1 + W2, M1 + M2, S1 + S2>(a.s * b.value);
 }
 template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
 constexpr auto operator*(Scalar<W2, M2, S2, T2> b, Quantity3<W1, M1, S1, T1> a) {
@@ -148,15 +150,15 @@ constexpr auto operator*(Scalar<W2, M2, S2, T2> b, Quantity3<W1, M1, S1, T1> a) 
 }
 template <int W1, int M1, int S1, class T1, int W2, int M2, int S2, class T2>
 constexpr auto operator/(Quantity3<W1, M1, S1, T1> a, Scalar<W2, M2, S2, T2> b) {
-    return detail::make_quantity3<W1 - W2, M1 - M2, S1 - S2>(a.rgb / b.value);
+    return detail::make_quantity3<W1 - W2, M1 - M2, S1 - S2>(a.s / b.value);
 }
-// Color3 (dimensionless) over a scalar quantity, e.g. a BSDF-weighted throughput divided by a pdf.
+// A dimensionless spectrum over a scalar quantity, e.g. a BSDF-weighted throughput divided by a pdf.
 template <int W, int M, int S, class T>
-constexpr auto operator/(Color3 a, Scalar<W, M, S, T> b) {
+constexpr auto operator/(SampledSpectrum a, Scalar<W, M, S, T> b) {
     return detail::make_quantity3<-W, -M, -S>(a / b.value);
 }
 template <int W, int M, int S, class T>
-constexpr auto operator*(Color3 a, Scalar<W, M, S, T> b) {
+constexpr auto operator*(SampledSpectrum a, Scalar<W, M, S, T> b) {
     return detail::make_quantity3<W, M, S>(a * b.value);
 }
 
@@ -168,7 +170,7 @@ using AreaPdf = Scalar<0, -2, 0, AreaPdfTag>; // probability per square metre [m
 using AreaPerSolidAngle = Scalar<0, 2, -1>; // the Jacobian dA/dω of directions to surface points [m^2 sr^-1]
 using Etendue = Scalar<0, 2, 1>;            // area x solid angle [m^2 sr]
 
-// RGB quantities.
+// Spectral quantities.
 using Power3 = Quantity3<1, 0, 0>;       // radiant flux [W]
 using Intensity3 = Quantity3<1, 0, -1>;  // radiant intensity [W sr^-1]
 using Irradiance3 = Quantity3<1, -2, 0>; // irradiance = radiosity = exitance [W m^-2]
@@ -181,18 +183,18 @@ using Bsdf3 = Quantity3<0, 0, -1>;                      // BSDF value [sr^-1]
 
 // A point source of intensity I at distance r delivers biradiance I / r^2.
 constexpr Biradiance3 biradiance(Intensity3 i, float distance_squared) {
-    return Biradiance3(i.rgb / distance_squared);
+    return Biradiance3(i.s / distance_squared);
 }
 // Incident radiance over a pdf-sampled direction: the one-sample estimate of ∫ L dω, a biradiance that
 // the reflection equation turns into radiance with f and the cosine.
-constexpr Biradiance3 biradiance(Radiance3 l, SolidAnglePdf pdf) { return Biradiance3(l.rgb / pdf.value); }
+constexpr Biradiance3 biradiance(Radiance3 l, SolidAnglePdf pdf) { return Biradiance3(l.s / pdf.value); }
 // Radiance reflected by a BSDF from a biradiance arriving at angle θ: f · E_bi · cos θ.
 constexpr Radiance3 reflected(Bsdf3 f, Biradiance3 e, float cos_theta) {
-    return Radiance3(f.rgb * e.rgb * cos_theta);
+    return Radiance3(f.s * e.s * cos_theta);
 }
 // A collimated beam (a directional light) that delivers irradiance E_⊥ to a surface perpendicular to it
 // has biradiance E_⊥: the cosine at the receiver is the reflection equation's, f · E_⊥ · cos θ.
-constexpr Biradiance3 biradiance(Irradiance3 e_perpendicular) { return Biradiance3(e_perpendicular.rgb); }
+constexpr Biradiance3 biradiance(Irradiance3 e_perpendicular) { return Biradiance3(e_perpendicular.s); }
 
 // The Jacobian of the map from directions at a receiver to points on a surface at distance r whose
 // normal makes the angle θ with the line of sight: dA = r^2 / |cos θ| dω (PBR 4th ed. §4.2.3).
@@ -209,11 +211,11 @@ constexpr SolidAnglePdf to_solid_angle(AreaPdf p, float distance_squared, float 
 constexpr SolidAnglePdf to_solid_angle(AreaPdf p, AreaPerSolidAngle jacobian) { return p * jacobian; }
 // Irradiance on a surface from radiance over a solid angle at a cosine.
 constexpr Irradiance3 irradiance(Radiance3 l, SolidAngle w, float cos_theta) {
-    return Irradiance3(l.rgb * w.value * cos_theta);
+    return Irradiance3(l.s * w.value * cos_theta);
 }
 // The exitance of a Lambertian emitter of radiance L: M = π L; its power over an area A: Φ = π A L.
 constexpr Irradiance3 lambertian_exitance(Radiance3 l) {
-    return Irradiance3(l.rgb * 3.14159265358979323846f);
+    return Irradiance3(l.s * 3.14159265358979323846f);
 }
 
 // Estimators.
@@ -222,7 +224,7 @@ constexpr Irradiance3 lambertian_exitance(Radiance3 l) {
 // (dimensionless: [sr^-1] [sr^-1]^-1), the factor that one bounce adds to a path's throughput in the
 // Monte Carlo estimate of the rendering equation (PBR 4th ed. §13.1). Evaluated as
 // f · (|cos θ_i| / p).
-constexpr Color3 throughput_weight(Bsdf3 f, float abs_cos, SolidAnglePdf pdf) { return f * (abs_cos / pdf); }
+constexpr SampledSpectrum throughput_weight(Bsdf3 f, float abs_cos, SolidAnglePdf pdf) { return f * (abs_cos / pdf); }
 
 // The power heuristic with β = 2 (Veach 1997, §9.2.4): w_a = p_a^2 / (p_a^2 + p_b^2), for one sample
 // from each of two strategies. The weights only sum to one when both densities are over the same measure

@@ -32,10 +32,11 @@ public:
     }
 
     bool signed_values() const override { return pass_ == Pass::Normal; }
+    bool radiometric() const override { return false; }
 
 private:
     // The film stores radiance; a debug value goes into its three channels as it is.
-    static Radiance3 film_value(Color3 v) { return Radiance3(v); }
+    static Radiance3 film_value(Color3 v) { return Radiance3(SampledSpectrum(v)); }
     Pass pass_;
 };
 

@@ -11,7 +11,7 @@ Radiance3 DirectIntegrator::reflected_from(const Light& light, const SurfaceHit&
     Point2f u_bsdf = tc.sampler.get_2d();
 
     // Light sampling.
-    if (auto ls = light.sample_li(ctx, u_light)) {
+    if (auto ls = light.sample_li(ctx, u_light, tc.lambda)) {
         Bsdf3 f = bsdf.f(hit.wo, ls->wi);
         float cos_i = abs_dot(ls->wi, hit.ns);
         if (!f.is_black() && cos_i > 0 && unoccluded(hit, *ls, tc)) {
@@ -32,10 +32,10 @@ Radiance3 DirectIntegrator::reflected_from(const Light& light, const SurfaceHit&
     SolidAnglePdf p_light;
     if (intersect(ray, &lhit, tc)) {
         if (lhit.area_light != &light) return l;
-        le = light.radiance(lhit, lhit.wo);
+        le = light.radiance(lhit, lhit.wo, tc.lambda);
         if (!bs->is_specular()) p_light = light.pdf_li(ctx, bs->wi, &lhit);
     } else if (light.type() == LightType::Infinite) {
-        le = light.le(ray);
+        le = light.le(ray, tc.lambda);
         if (!bs->is_specular()) p_light = light.pdf_li(ctx, bs->wi, nullptr);
     }
     if (le.is_black()) return l;
@@ -50,16 +50,16 @@ Radiance3 DirectIntegrator::reflected_from(const Light& light, const SurfaceHit&
 
 Radiance3 DirectIntegrator::radiance(Ray ray, ThreadContext& tc) const {
     Radiance3 l;
-    Color3 beta(1.0f);
+    SampledSpectrum beta(1.0f);
     for (int depth = 0;;) {
         tc.arena.reset();
         SurfaceHit hit;
         if (!intersect(ray, &hit, tc)) {
-            for (const Light* env : scene_.infinite_lights) l += env->le(ray) * beta;
+            for (const Light* env : scene_.infinite_lights) l += env->le(ray, tc.lambda) * beta;
             break;
         }
-        if (hit.area_light) l += hit.area_light->radiance(hit, hit.wo) * beta;
-        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.arena) : BSDF();
+        if (hit.area_light) l += hit.area_light->radiance(hit, hit.wo, tc.lambda) * beta;
+        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.lambda, tc.arena) : BSDF();
         if (!bsdf) {
             ray = hit.spawn_ray(ray.d);
             continue;

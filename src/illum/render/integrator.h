@@ -10,6 +10,7 @@
 
 #include "illum/geometry/ray.h"
 #include "illum/radiometry/quantity.h"
+#include "illum/radiometry/sampled_wavelengths.h"
 #include "illum/render/sampler.h"
 #include "illum/render/scene.h"
 #include "illum/util/arena.h"
@@ -19,6 +20,9 @@ namespace illum {
 struct ThreadContext {
     Sampler sampler;
     ScratchArena arena;
+    // The current camera sample's wavelengths (spectral mode) or RGB mode's; a dispersive event terminates
+    // the secondary ones.
+    SampledWavelengths lambda;
     std::uint64_t rays = 0; // rays traced (closest hit and shadow)
 
     explicit ThreadContext(const Sampler& s) : sampler(s) {}
@@ -34,6 +38,9 @@ public:
     // Whether estimates may be negative (a signed debug pass); radiance never is, so a negative radiance
     // estimate is a numerical failure that the render loop drops and counts.
     virtual bool signed_values() const { return false; }
+    // Whether the estimate is radiance, which spectral mode computes at sampled wavelengths; a debug pass's
+    // value is RGB in either mode.
+    virtual bool radiometric() const { return true; }
 
 protected:
     bool intersect(const Ray& ray, SurfaceHit* hit, ThreadContext& tc) const {

@@ -6,7 +6,7 @@ namespace illum {
 
 Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
     Radiance3 l;
-    Color3 beta(1.0f);   // path throughput
+    SampledSpectrum beta(1.0f);   // path throughput
     float eta_scale = 1; // radiance scaling by refraction, undone for Russian roulette
     bool specular_bounce = false;
     SolidAnglePdf prev_bsdf_pdf; // of the BSDF sample that made `ray`
@@ -28,7 +28,7 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         SurfaceHit hit;
         if (!intersect(ray, &hit, tc)) {
             for (const Light* env : scene_.infinite_lights) {
-                Radiance3 le = env->le(ray);
+                Radiance3 le = env->le(ray, tc.lambda);
                 if (le.is_black()) continue;
                 if (depth == 0 || specular_bounce) {
                     l += le * beta;
@@ -43,7 +43,7 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         }
 
         if (hit.area_light) {
-            Radiance3 le = hit.area_light->radiance(hit, hit.wo);
+            Radiance3 le = hit.area_light->radiance(hit, hit.wo, tc.lambda);
             if (!le.is_black()) {
                 if (depth == 0 || specular_bounce) {
                     l += le * beta;
@@ -57,7 +57,7 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
 
         prev_bsdf = BSDF();
         tc.arena.reset(); // the previous vertex's BSDF is no longer needed
-        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.arena) : BSDF();
+        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.lambda, tc.arena) : BSDF();
         if (!bsdf) {
             // A pure interface (no material): the path continues straight through, no scattering event. Like
             // a specular bounce, emission found beyond it is counted in full: next-event estimation from the
@@ -79,7 +79,7 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         if (bsdf.is_non_specular()) {
             float pmf = 0;
             if (const Light* light = scene_.light_sampler.sample(u_light, &pmf); light && pmf > 0) {
-                if (auto ls = light->sample_li(ctx, u_li)) {
+                if (auto ls = light->sample_li(ctx, u_li, tc.lambda)) {
                     Bsdf3 f = bsdf.f(wo, ls->wi);
                     float cos_i = abs_dot(ls->wi, hit.ns);
                     if (!f.is_black() && cos_i > 0 && unoccluded(hit, *ls, tc)) {

@@ -46,6 +46,9 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });
     std::atomic<std::uint64_t> nonfinite{0};
     const bool reject_negative = !integrator.signed_values();
+    // A debug pass's values are RGB in either mode and do not pass through the sensor.
+    const bool spectral = options.spectral && integrator.radiometric();
+    const bool radiometric = integrator.radiometric();
 
     const bool timed = options.time_budget > 0;
     std::uint64_t pixels = std::uint64_t(w) * h;
@@ -65,13 +68,17 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                 FilterSample fs = scene.filter->sample(tc.sampler.get_pixel_2d());
                                 Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
                                 Ray ray = scene.camera->generate_ray(p_film, tc.sampler.get_2d());
+                                tc.lambda = spectral ? SampledWavelengths::sample_visible(tc.sampler.get_1d(),
+                                                                                          scene.color_space)
+                                                     : SampledWavelengths::rgb_mode();
                                 Radiance3 v = integrator.estimate(ray, tc);
                                 tc.arena.reset();
                                 if (!v.is_finite() || (reject_negative && v.has_negative())) {
                                     ++nonfinite;
                                     v = Radiance3(0.0f);
                                 }
-                                film.add_sample(x, y, v, fs.weight);
+                                Color3 c = radiometric ? scene.sensor.to_rgb(v, tc.lambda) : v.rgb();
+                                film.add_sample(x, y, c, fs.weight);
                             }
                     progress.add(std::uint64_t(t.x1 - t.x0) * (t.y1 - t.y0) * (s1 - s0));
                 }

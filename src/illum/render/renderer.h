@@ -20,6 +20,8 @@ struct RenderOptions {
     std::string sampler = "sobol";
     bool quiet = false;
     int tile_size = 16;
+    // Spectral mode: four sampled wavelengths per camera sample instead of RGB.
+    bool spectral = false;
 };
 
 struct RenderResult {

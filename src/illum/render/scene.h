@@ -9,6 +9,7 @@
 #include "illum/bsdf/material.h"
 #include "illum/camera/camera.h"
 #include "illum/camera/filter.h"
+#include "illum/camera/sensor.h"
 #include "illum/geometry/accelerator.h"
 #include "illum/light/light.h"
 #include "illum/light/light_sampler.h"
@@ -33,6 +34,10 @@ public:
     PowerLightSampler light_sampler;
     std::unique_ptr<Camera> camera;
     std::unique_ptr<Filter> filter;
+    // The film's sensor and output colour space, which is also the space RGB inputs are given in
+    // (pbrt-v4's ColorSpace; one per scene here).
+    Sensor sensor;
+    const RGBColorSpace* color_space = &RGBColorSpace::srgb();
     int width = 0, height = 0;
     RenderRequest request;
     std::vector<std::string> warnings;

@@ -9,6 +9,7 @@
 
 #include "illum/bsdf/create_material.h"
 #include "illum/camera/create_camera.h"
+#include "illum/camera/create_sensor.h"
 #include "illum/geometry/create_shape.h"
 #include "illum/light/area_emission.h"
 #include "illum/light/diffuse_area_light.h"
@@ -32,6 +33,8 @@ public:
         scene_->height = film.height;
         scene_->filter = create_filter(desc_.filter, diag_);
         scene_->camera = create_camera(desc_.camera, film, diag_);
+        scene_->color_space = color_space();
+        scene_->sensor = create_sensor(desc_.film, desc_.camera, *scene_->color_space, diag_);
         scene_->request = create_render_request(desc_.integrator, desc_.sampler, diag_);
         scene_->request.output = film.filename;
         build_materials();
@@ -47,6 +50,14 @@ public:
     }
 
 private:
+    const RGBColorSpace* color_space() {
+        const RGBColorSpace* cs = RGBColorSpace::named(desc_.color_space);
+        if (!cs)
+            throw Error(fmt::format("unknown ColorSpace \"{}\" (use srgb, rec2020, aces2065-1 or dci-p3)",
+                                    desc_.color_space));
+        return cs;
+    }
+
     // pbrt-v4 rejects parameters that nothing reads; illum warns (an error under --strict), naming each one,
     // so a misspelt or unsupported parameter never changes the image silently.
     void report_unused_parameters() {

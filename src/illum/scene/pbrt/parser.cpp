@@ -1,5 +1,7 @@
 #include "illum/scene/pbrt/parser.h"
 
+#include "illum/radiometry/color_space.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -599,6 +601,9 @@ private:
             // Accelerator: Embree builds its own; ignored.
         } else if (name == "ColorSpace") {
             sc_.color_space = read_string(f, d, "color space name");
+            if (!RGBColorSpace::named(sc_.color_space))
+                throw Error(loc, fmt::format("unknown ColorSpace \"{}\" (use srgb, rec2020, aces2065-1 or dci-p3)",
+                                             sc_.color_space));
             if (in_world_)
                 warn(loc, "ColorSpace after WorldBegin: one color space applies to the whole scene here");
         } else if (name == "Option") {

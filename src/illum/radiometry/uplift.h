@@ -1,0 +1,45 @@
+// RGB inputs as spectra (spectral mode), as pbrt-v4 uplifts them so that the same scene gives the same
+// colours: a reflectance by its sigmoid polynomial (Jakob & Hanika 2019), an unbounded value (an index,
+// a scattering coefficient) as 2m times the polynomial of rgb/(2m), m its largest component, and an
+// emitter's RGB as that unbounded spectrum times the colour space's illuminant (normalised to luminance
+// 1), so (1, 1, 1) is the space's white of luminance 1. In RGB mode each is the identity (a reflectance
+// clamped to [0, 1]).
+#pragma once
+
+#include "illum/radiometry/color_space.h"
+#include "illum/radiometry/sampled_wavelengths.h"
+
+namespace illum {
+
+// The polynomial, scale and whether the colour space's illuminant multiplies it: one RGB value's
+// spectrum, computed once (a constant parameter) or per hit (a texture).
+struct UpliftedRgb {
+    RGBSigmoidPolynomial poly;
+    float scale = 1;
+    double operator()(double lambda_nm) const { return scale * poly(float(lambda_nm)); }
+};
+UpliftedRgb uplift_albedo_poly(Color3 rgb, const RGBColorSpace& cs);   // rgb clamped to [0, 1]
+UpliftedRgb uplift_unbounded_poly(Color3 rgb, const RGBColorSpace& cs); // rgb clamped to >= 0
+
+inline SampledSpectrum sample(const UpliftedRgb& u, const SampledWavelengths& w) {
+    SampledSpectrum s;
+    for (int i = 0; i < kSpectrumSamples; ++i) s[i] = u.scale * u.poly(w.lambda[i]);
+    return s;
+}
+
+inline SampledSpectrum uplift_albedo(Color3 rgb, const SampledWavelengths& w) {
+    if (!w.spectral()) return SampledSpectrum(clamp(rgb, 0.0f, 1.0f));
+    return sample(uplift_albedo_poly(rgb, *w.color_space), w);
+}
+inline SampledSpectrum uplift_unbounded(Color3 rgb, const SampledWavelengths& w) {
+    if (!w.spectral()) return SampledSpectrum(rgb);
+    return sample(uplift_unbounded_poly(rgb, *w.color_space), w);
+}
+// The colour space's illuminant at the four wavelengths, luminance 1.
+SampledSpectrum illuminant_at(const RGBColorSpace& cs, const SampledWavelengths& w);
+inline SampledSpectrum uplift_illuminant(Color3 rgb, const SampledWavelengths& w) {
+    if (!w.spectral()) return SampledSpectrum(rgb);
+    return sample(uplift_unbounded_poly(rgb, *w.color_space), w) * illuminant_at(*w.color_space, w);
+}
+
+} // namespace illum
