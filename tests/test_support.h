@@ -26,6 +26,7 @@ struct RenderSetup {
     int threads = 0;
     std::uint64_t seed = 0;
     std::string sampler = "sobol";
+    bool spectral = false;
 };
 
 inline RenderResult render_pbrt(const std::string& text, const RenderSetup& setup = {}) {
@@ -39,6 +40,7 @@ inline RenderResult render_pbrt(const std::string& text, const RenderSetup& setu
     opt.seed = setup.seed;
     opt.sampler = setup.sampler;
     opt.quiet = true;
+    opt.spectral = setup.spectral;
     return render(*scene, *integrator, opt);
 }
 

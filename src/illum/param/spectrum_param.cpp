@@ -1,5 +1,6 @@
 #include "illum/param/spectrum_param.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -74,7 +75,18 @@ GivenSpectrum given_spectrum(const Param& p) {
 
 } // namespace
 
-Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind) {
+namespace {
+// A spectrum outside the RGB gamut (a narrow band, say) has negative components; RGB mode renders its
+// nearest non-negative colour (the negative components set to 0), warned by nothing: a scene that needs the
+// colour exactly is rendered with --spectral.
+Color3 in_gamut(Color3 c) { return {std::max(c.r, 0.0f), std::max(c.g, 0.0f), std::max(c.b, 0.0f)}; }
+Color3 reduce(const Param& p, SpectrumKind kind);
+} // namespace
+
+Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind) { return in_gamut(reduce(p, kind)); }
+
+namespace {
+Color3 reduce(const Param& p, SpectrumKind kind) {
     GivenSpectrum g = given_spectrum(p);
     if (g.kelvin > 0) return blackbody_rgb(g.kelvin);
     if (!g.name.empty())
@@ -87,6 +99,7 @@ Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind) {
     return kind == SpectrumKind::Illuminant ? illuminant_spectrum_to_rgb(g.table)
                                             : unbounded_spectrum_to_rgb(g.table);
 }
+} // namespace
 
 DenselySampledSpectrum spectrum_param_dense(const Param& p, SpectrumKind kind) {
     GivenSpectrum g = given_spectrum(p);

@@ -1,0 +1,278 @@
+// Spectral mode end to end: a white furnace returns white, a prism of a named glass disperses light at the
+// angles Snell's law gives for that glass's index, and a lossless prism conserves energy.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+#include <fmt/format.h>
+
+#include "test_support.h"
+
+namespace illum {
+namespace {
+
+// A closed furnace of white (1, 1, 1) Lambertian walls emitting (1, 1, 1), albedo 0.8: every pixel sees
+// Le / (1 - ρ) = 5 in each channel, in RGB and, when the white uplifts to the constant 1 and the emission
+// to the colour space's white, in spectral mode. Tolerance: 0.5% (the acceptance) plus 4 standard errors
+// of the image mean (pixels are independent estimates).
+TEST(SpectralMode, WhiteFurnaceIsWhite) {
+    test::RenderSetup s;
+    s.spp = 64;
+    s.spectral = true;
+    Image img = test::render_pbrt(test::closed_furnace(0.8, 1, 24), s).image;
+    for (int c = 0; c < 3; ++c) {
+        test::MeanEstimate m = test::pixel_mean(img, c);
+        std::printf("channel %d: %.5f ± %.5f (expected 5)\n", c, m.mean, m.standard_error);
+        EXPECT_NEAR(m.mean, 5, 5 * 0.005 + 4 * m.standard_error) << "channel " << c;
+    }
+}
+
+// --- The prism ------------------------------------------------------------------------------------------
+//
+// An equilateral prism of Schott N-SF11 ("glass-F11", pbrt-v4's name for its SF11 table), extruded along y.
+// The camera at the origin looks along +z through it at a narrow emitting slit; a ray of wavelength λ
+// that reaches the slit has been deviated by δ(θ1, n(λ)) at the prism, so the slit appears, per
+// wavelength band, at the image column whose ray Snell's law sends to the slit's centre. (This is the
+// reciprocal of a thin beam from the slit landing on a screen at the camera: light paths are reversible
+// through a lossless dielectric; illum renders it from the camera, which its path tracer converges on
+// without a light tracer.)
+//
+// The prediction below is an independent 2D trace in the prism's principal plane with the Sellmeier
+// index (Schott's catalogue coefficients for SF11), not illum's code.
+
+struct V2 {
+    double x, z;
+};
+V2 operator+(V2 a, V2 b) { return {a.x + b.x, a.z + b.z}; }
+V2 operator-(V2 a, V2 b) { return {a.x - b.x, a.z - b.z}; }
+V2 operator*(double s, V2 a) { return {s * a.x, s * a.z}; }
+double dot(V2 a, V2 b) { return a.x * b.x + a.z * b.z; }
+V2 unit(V2 a) { return (1 / std::sqrt(dot(a, a))) * a; }
+V2 rotate(V2 a, double t) { return {a.x * std::cos(t) - a.z * std::sin(t), a.x * std::sin(t) + a.z * std::cos(t)}; }
+
+// Schott N-SF11 / SF11 Sellmeier coefficients: n² = 1 + Σ B_i λ² / (λ² - C_i), λ in µm.
+double sf11_index(double nm) {
+    const double B[3] = {1.73759695, 0.313747346, 1.89878101}, C[3] = {0.013188707, 0.0623068142, 155.23629};
+    double l2 = (nm / 1000) * (nm / 1000), n2 = 1;
+    for (int i = 0; i < 3; ++i) n2 += B[i] * l2 / (l2 - C[i]);
+    return std::sqrt(n2);
+}
+
+// Refraction of unit direction d at a surface of unit normal n (against d) from index n1 to n2.
+bool refract(V2 d, V2 n, double eta1, double eta2, V2* t) {
+    double cos_i = -dot(d, n), r = eta1 / eta2;
+    double k = 1 - r * r * (1 - cos_i * cos_i);
+    if (k < 0) return false;
+    *t = r * d + (r * cos_i - std::sqrt(k)) * n;
+    return true;
+}
+// Ray (o, d) against the line through a and b: the parameter along the ray, or -1.
+double hit_line(V2 o, V2 d, V2 a, V2 b, V2* p) {
+    V2 e = b - a, n = {-e.z, e.x};
+    double den = dot(d, n);
+    if (den == 0) return -1;
+    double t = dot(a - o, n) / den;
+    *p = o + t * d;
+    double s = dot(*p - a, e) / dot(e, e);
+    return s >= 0 && s <= 1 ? t : -1;
+}
+
+struct Prism {
+    V2 apex, b1, b2;       // face 1 = b1-apex (entry), face 2 = apex-b2 (exit)
+    V2 slit_c, slit_u;     // the slit's centre and its unit direction across
+    double slit_width = 0.25;
+};
+
+constexpr int kW = 480, kH = 8;
+constexpr double kHalfWidth = 0.5; // screen window: the camera sees tan angles in [-0.5, 0.5]
+
+V2 camera_dir(double raster_x) { return unit({-kHalfWidth + 2 * kHalfWidth * raster_x / kW, 1}); }
+
+// The ray through raster column x after the prism at index n: its exit point and direction.
+bool through_prism(const Prism& p, double x, double n, V2* o, V2* d) {
+    V2 dir = camera_dir(x), hit;
+    if (hit_line({0, 0}, dir, p.b1, p.apex, &hit) < 0) return false;
+    V2 e1 = p.apex - p.b1, n1 = unit({e1.z, -e1.x}); // outward normal of face 1 (towards the camera)
+    if (dot(n1, dir) > 0) n1 = -1 * n1;
+    V2 in;
+    if (!refract(dir, n1, 1, n, &in)) return false;
+    V2 exit_p;
+    if (hit_line(hit, in, p.apex, p.b2, &exit_p) < 0) return false;
+    V2 e2 = p.b2 - p.apex, n2 = unit({e2.z, -e2.x});
+    if (dot(n2, in) > 0) n2 = -1 * n2;
+    if (!refract(in, n2, n, 1, d)) return false;
+    *o = exit_p;
+    return true;
+}
+
+Prism make_prism() {
+    // Canonical frame: apex up, base on the x axis, side 8; a ray at angle φ above +x meets face 1 at
+    // incidence φ + 30°. φ = 40°: incidence 70°, far from minimum deviation so the slit's image stays
+    // compact. The frame is rotated so that this ray is the camera's +z, face 1's midpoint on the axis.
+    const double s = 8, h = s * std::sqrt(3.0) / 2, phi = 40 * kPiD / 180;
+    V2 apex{0, h}, b1{-s / 2, 0}, b2{s / 2, 0};
+    double rot = kPiD / 2 - phi;
+    auto place = [&](V2 v) { return rotate(v, rot); };
+    Prism p{place(apex), place(b1), place(b2), {}, {}};
+    V2 mid = 0.5 * (p.apex + p.b1);
+    V2 shift = V2{0, 12} - mid;
+    // The ray along +z must meet face 1 at its midpoint: shift so the midpoint lies on x = 0, z = 12.
+    p.apex = p.apex + shift;
+    p.b1 = p.b1 + shift;
+    p.b2 = p.b2 + shift;
+    // The slit: 40 units along the central column's 550 nm exit ray, across it.
+    V2 o, d;
+    EXPECT_TRUE(through_prism(p, kW / 2.0, sf11_index(550), &o, &d));
+    p.slit_c = o + 40 * d;
+    p.slit_u = {-d.z, d.x};
+    return p;
+}
+
+// The raster column whose ray reaches the slit's centre at wavelength λ (bisection).
+double predicted_column(const Prism& p, double nm) {
+    double n = sf11_index(nm);
+    auto side = [&](double x) {
+        V2 o, d;
+        if (!through_prism(p, x, n, &o, &d)) return std::nan("");
+        // Where the exit ray crosses the slit's line, measured across it.
+        V2 nrm = {p.slit_u.z, -p.slit_u.x};
+        double t = dot(p.slit_c - o, nrm) / dot(d, nrm);
+        return dot(o + t * d - p.slit_c, p.slit_u);
+    };
+    // Bracket the crossing between two adjacent columns whose rays pass through the prism, then bisect.
+    double lo = -1, hi = -1, slo = 0;
+    for (int x = 0; x + 1 < kW && lo < 0; ++x) {
+        double a = side(x + 0.5), b = side(x + 1.5);
+        if (!std::isnan(a) && !std::isnan(b) && (a < 0) != (b < 0)) {
+            lo = x + 0.5;
+            hi = x + 1.5;
+            slo = a;
+        }
+    }
+    EXPECT_GE(lo, 0) << "the slit is not within the image at " << nm << " nm";
+    for (int i = 0; i < 60; ++i) {
+        double mid = 0.5 * (lo + hi), sm = side(mid);
+        if ((sm < 0) == (slo < 0)) {
+            lo = mid;
+            slo = sm;
+        } else {
+            hi = mid;
+        }
+    }
+    return 0.5 * (lo + hi);
+}
+
+// max_depth 2 (the two refractions) for the deviation test: it isolates the beam that crosses the prism
+// once, as the main spot on a screen, from the faint ghosts of internal reflections.
+std::string prism_scene(const Prism& p, const std::string& light_spectrum, const std::string& world_extra,
+                        int max_depth) {
+    auto pt = [](V2 v, double y) { return fmt::format("{} {} {}", v.x, y, v.z); };
+    const double y = 20;
+    std::string prism = fmt::format(
+        R"(Shape "trianglemesh" "point3 P" [ {} {} {} {} {} {} ]
+  "integer indices" [ 0 1 2  3 5 4  0 3 4  0 4 1  1 4 5  1 5 2  2 5 3  2 3 0 ])",
+        pt(p.apex, -y), pt(p.b1, -y), pt(p.b2, -y), pt(p.apex, y), pt(p.b1, y), pt(p.b2, y));
+    V2 a = p.slit_c - (p.slit_width / 2) * p.slit_u, b = p.slit_c + (p.slit_width / 2) * p.slit_u;
+    std::string slit = light_spectrum.empty()
+                           ? ""
+                           : fmt::format(R"(AttributeBegin
+  Material "diffuse" "rgb reflectance" [0 0 0]
+  AreaLightSource "diffuse" "spectrum L" [ {} ] "bool twosided" true
+  Shape "trianglemesh" "point3 P" [ {} {} {} {} ] "integer indices" [ 0 1 2 0 2 3 ]
+AttributeEnd)",
+                                         light_spectrum, pt(a, -y), pt(b, -y), pt(b, y), pt(a, y));
+    return fmt::format(R"(
+Integrator "path" "integer maxdepth" [{depth}]
+Camera "perspective" "float fov" [90] "float screenwindow" [ {hw} {hw2} -{vh} {vh} ]
+Film "rgb" "integer xresolution" [{w}] "integer yresolution" [{h}]
+Sampler "independent"
+WorldBegin
+{extra}
+AttributeBegin
+  Material "dielectric" "spectrum eta" "glass-F11"
+  {prism}
+AttributeEnd
+{slit}
+)",
+                       fmt::arg("hw", -kHalfWidth), fmt::arg("hw2", kHalfWidth),
+                       fmt::arg("vh", kHalfWidth * kH / kW), fmt::arg("w", kW), fmt::arg("h", kH),
+                       fmt::arg("extra", world_extra), fmt::arg("prism", prism), fmt::arg("slit", slit), fmt::arg("depth", max_depth));
+}
+
+// The image's centroid column (over all rows, weighted by luminance: Y ≥ 0 even where a narrow band's
+// RGB has a negative component).
+double centroid_column(const Image& img, double* total) {
+    double sw = 0, sx = 0;
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            Color3 c = img(x, y);
+            double w = c.luminance();
+            sw += w;
+            sx += w * (x + 0.5);
+        }
+    *total = sw;
+    return sx / sw;
+}
+
+TEST(SpectralMode, PrismDeviatesEachBandAsSnellsLawWithTheGlassIndex) {
+    // The coefficients above are SF11's: n_d = 1.78472 (Schott).
+    EXPECT_NEAR(sf11_index(587.56), 1.78472, 2e-4);
+    Prism p = make_prism();
+    double previous = -1;
+    for (double centre : {450.0, 550.0, 650.0}) {
+        double lo = centre - 5, hi = centre + 5;
+        std::string band = fmt::format("{} 0 {} 1 {} 1 {} 0", lo - 0.01, lo, hi, hi + 0.01);
+        test::RenderSetup s;
+        s.spp = 1024;
+        s.spectral = true;
+        s.seed = 3;
+        Image img = test::render_pbrt(prism_scene(p, band, "", 2), s).image;
+        double total = 0, measured = centroid_column(img, &total);
+        double predicted = predicted_column(p, centre);
+        std::printf("%.0f nm band (n = %.5f): slit seen at column %.2f, Snell's law predicts %.2f\n", centre,
+                    sf11_index(centre), measured, predicted);
+        ASSERT_GT(total, 0) << centre << " nm: the slit is not seen";
+        EXPECT_NEAR(measured, predicted, 1.0) << centre << " nm";
+        // Shorter wavelengths see a higher index and are deviated more: the bands are separated.
+        if (previous >= 0) {
+            EXPECT_GT(std::abs(measured - previous), 10) << "bands not separated";
+        }
+        previous = measured;
+    }
+}
+
+// Energy: inside a uniform white environment of radiance 1, a lossless (dispersive) prism changes no
+// radiance: every path leaves to the environment with total weight 1 (radiance scaling by 1/η² on entry
+// is undone on exit), at every wavelength. Each channel's image mean must be 1 within 0.5% plus 4
+// standard errors.
+TEST(SpectralMode, LosslessPrismConservesEnergy) {
+    Prism p = make_prism();
+    test::RenderSetup s;
+    s.spp = 64;
+    s.spectral = true;
+    std::string scene = prism_scene(p, "", R"(LightSource "infinite" "rgb L" [1 1 1])", -1);
+    Image img = test::render_pbrt(scene, s).image;
+    // Only the columns that look through both faces of the prism (the others see the environment directly).
+    std::vector<int> through;
+    for (int x = 0; x < kW; ++x) {
+        V2 o, d;
+        if (through_prism(p, x + 0.5, sf11_index(587.56), &o, &d)) through.push_back(x);
+    }
+    ASSERT_GT(through.size(), 50u);
+    for (int c = 0; c < 3; ++c) {
+        double sum = 0, sum2 = 0;
+        std::size_t n = 0;
+        for (int x : through)
+            for (int y = 0; y < kH; ++y, ++n) {
+                double v = img(x, y)[c];
+                sum += v;
+                sum2 += v * v;
+            }
+        double mean = sum / n, se = std::sqrt(std::max(0.0, sum2 / n - mean * mean) / (n - 1));
+        std::printf("channel %d over %zu pixels through the prism: %.5f ± %.5f (expected 1)\n", c, n, mean, se);
+        EXPECT_NEAR(mean, 1, 0.005 + 4 * se) << "channel " << c;
+    }
+}
+
+} // namespace
+} // namespace illum
