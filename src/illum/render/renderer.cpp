@@ -64,8 +64,12 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                 tc.sampler.start_pixel_sample({x, y}, s);
                                 FilterSample fs = scene.filter->sample(tc.sampler.get_pixel_2d());
                                 Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
-                                Ray ray = scene.camera->generate_ray(p_film, tc.sampler.get_2d());
-                                Radiance3 v = integrator.estimate(ray, tc);
+                                // RGB mode: the camera sees the d line. A vignetted sample adds zero
+                                // radiance but still counts (its filter weight goes to the pixel).
+                                std::optional<CameraRay> cr =
+                                    scene.camera->generate_ray(p_film, tc.sampler.get_2d(), kDLineNm);
+                                Radiance3 v(0.0f);
+                                if (cr) v = integrator.estimate(cr->ray, tc) * cr->weight;
                                 tc.arena.reset();
                                 if (!v.is_finite() || (reject_negative && v.has_negative())) {
                                     ++nonfinite;
