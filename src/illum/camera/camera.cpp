@@ -44,10 +44,10 @@ PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, int wid
     raster_to_screen(s, width, height, tan_half, &ax_, &bx_, &ay_, &by_);
 }
 
-Ray PerspectiveCamera::generate_ray(Point2f p, Point2f u_lens) const {
+std::optional<CameraRay> PerspectiveCamera::generate_ray(Point2f p, Point2f u_lens, float) const {
     Vector3f dir = normalize(Vector3f{ax_ + bx_ * p.x, ay_ + by_ * p.y, 1});
     Ray r = thin_lens({0, 0, 0}, dir, lens_radius_, focal_distance_, u_lens);
-    return {world_from_camera_(r.o), normalize(world_from_camera_(r.d)), kInfinity};
+    return CameraRay{{world_from_camera_(r.o), normalize(world_from_camera_(r.d)), kInfinity}};
 }
 
 OrthographicCamera::OrthographicCamera(const Transform& world_from_camera, int width, int height,
@@ -57,10 +57,10 @@ OrthographicCamera::OrthographicCamera(const Transform& world_from_camera, int w
     raster_to_screen(s, width, height, 1.0f, &ax_, &bx_, &ay_, &by_);
 }
 
-Ray OrthographicCamera::generate_ray(Point2f p, Point2f u_lens) const {
+std::optional<CameraRay> OrthographicCamera::generate_ray(Point2f p, Point2f u_lens, float) const {
     Point3f o{ax_ + bx_ * p.x, ay_ + by_ * p.y, 0};
     Ray r = thin_lens(o, {0, 0, 1}, lens_radius_, focal_distance_, u_lens);
-    return {world_from_camera_(r.o), normalize(world_from_camera_(r.d)), kInfinity};
+    return CameraRay{{world_from_camera_(r.o), normalize(world_from_camera_(r.d)), kInfinity}};
 }
 
 } // namespace illum

@@ -1,11 +1,25 @@
-// Cameras map a point on the film (raster coordinates, pixels; x right, y down) and a lens sample to a
-// world-space ray. Camera space follows pbrt: +x right, +y up, +z forward in the image.
+// Cameras map a point on the film (raster coordinates, pixels; x right, y down), a lens sample and a
+// wavelength to a world-space ray and its weight, or to no ray (vignetted: the sample counts, with zero
+// radiance). Camera space follows pbrt: +x right, +y up, +z forward in the image.
 #pragma once
+
+#include <optional>
 
 #include "illum/geometry/ray.h"
 #include "illum/math/transform.h"
 
 namespace illum {
+
+// The Fraunhofer d line (helium, 587.56 nm), where glass catalogues give n_d and V_d: the wavelength a
+// camera is asked for in RGB mode.
+inline constexpr float kDLineNm = 587.56f;
+
+// A camera ray; `weight` multiplies the radiance the integrator finds along it (1 for the projective
+// cameras; a lens camera's cos^4 and pupil-area factor, realistic_camera.h).
+struct CameraRay {
+    Ray ray;
+    float weight = 1;
+};
 
 struct Screen {
     float x0, x1, y0, y1; // screen window
@@ -14,7 +28,13 @@ struct Screen {
 class Camera {
 public:
     virtual ~Camera() = default;
-    virtual Ray generate_ray(Point2f p_raster, Point2f u_lens) const = 0;
+    // lambda_nm: the path's hero wavelength (spectral mode) or kDLineNm (RGB mode). nullopt when the
+    // lens system blocks the ray.
+    virtual std::optional<CameraRay> generate_ray(Point2f p_raster, Point2f u_lens,
+                                                  float lambda_nm) const = 0;
+    // True when generate_ray's direction depends on the wavelength (a dispersive lens): a spectral
+    // integrator then keeps only the hero wavelength, whose path the ray is.
+    virtual bool is_dispersive() const { return false; }
 };
 
 // A perspective camera with an optional thin lens (lens_radius > 0 focuses at focal_distance).
@@ -24,7 +44,7 @@ class PerspectiveCamera final : public Camera {
 public:
     PerspectiveCamera(const Transform& world_from_camera, int width, int height, float fov_deg,
                       float lens_radius = 0, float focal_distance = 1e6f, const Screen* screen = nullptr);
-    Ray generate_ray(Point2f p_raster, Point2f u_lens) const override;
+    std::optional<CameraRay> generate_ray(Point2f p_raster, Point2f u_lens, float lambda_nm) const override;
 
     static Screen default_screen(int width, int height);
 
@@ -40,7 +60,7 @@ class OrthographicCamera final : public Camera {
 public:
     OrthographicCamera(const Transform& world_from_camera, int width, int height, float lens_radius = 0,
                        float focal_distance = 1e6f, const Screen* screen = nullptr);
-    Ray generate_ray(Point2f p_raster, Point2f u_lens) const override;
+    std::optional<CameraRay> generate_ray(Point2f p_raster, Point2f u_lens, float lambda_nm) const override;
 
 private:
     Transform world_from_camera_;

@@ -1,6 +1,15 @@
 #include "illum/camera/create_camera.h"
 
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 #include <fmt/format.h>
+#include <fstream>
+
+#include "illum/camera/aperture_shape.h"
+#include "illum/camera/lens_file.h"
+#include "illum/camera/realistic_camera.h"
+#include "illum/image/image_io.h"
 
 namespace illum {
 
@@ -15,6 +24,9 @@ FilmSettings create_film(const EntityDesc& film, Diagnostics& diag) {
     if (f.width <= 0 || f.height <= 0 || f.width > 65536 || f.height > 65536)
         throw Error(film.loc, fmt::format("film resolution {}x{} is out of range", f.width, f.height));
     f.filename = film.params.get_string("filename", "");
+    f.diagonal_mm = film.params.get_float("diagonal", 35);
+    if (!(f.diagonal_mm > 0))
+        throw Error(film.params.find("diagonal")->loc, "film diagonal must be positive");
     return f;
 }
 
@@ -29,7 +41,89 @@ std::unique_ptr<Filter> create_filter(const EntityDesc& f, Diagnostics& diag) {
     throw Error(f.loc, fmt::format("unknown pixel filter \"{}\"", f.type));
 }
 
+namespace {
+
+// The parser reads the Camera directive's parameters without resolving file names, so a relative lens or
+// aperture file is taken against the folder of the scene file that names it (the position's file) here;
+// a name that is absolute, or that the parser did resolve, is kept.
+std::string scene_relative(const Param& p, const std::string& name) {
+    namespace fs = std::filesystem;
+    if (name.empty() || fs::path(name).is_absolute() || p.loc.file.empty()) return name;
+    fs::path joined = (fs::path(p.loc.file).parent_path() / name).lexically_normal();
+    std::error_code ec;
+    if (fs::exists(joined, ec) || !fs::exists(name, ec)) return joined.string();
+    return name;
+}
+
+bool readable(const std::string& path, const Param& p, Diagnostics& diag, const char* what) {
+    if (std::ifstream(path)) return true;
+    diag.missing_file(p.loc, fmt::format("cannot read {} \"{}\": {}", what, path, std::strerror(errno)));
+    return false;
+}
+
+// pbrt-v4's RealisticCamera::Create: lensfile, aperturediameter [mm], focusdistance [m], aperture.
+std::unique_ptr<Camera> realistic_camera(const CameraDesc& c, const FilmSettings& film, Diagnostics& diag) {
+    const Transform world_from_camera = c.camera_from_world.inverse();
+    const ParamSet& ps = c.params;
+    const Param* lens_param = ps.find("lensfile");
+    std::string lens_file = ps.get_string("lensfile", "");
+    if (lens_file.empty()) throw Error(c.loc, "realistic camera needs \"string lensfile\"");
+    float aperture_mm = ps.get_float("aperturediameter", 1.0f);
+    float focus = ps.get_float("focusdistance", 10.0f);
+    if (!(aperture_mm > 0))
+        throw Error(ps.find("aperturediameter")->loc, "aperturediameter must be positive");
+    if (!(focus > 0)) throw Error(ps.find("focusdistance")->loc, "focusdistance must be positive");
+    std::string aperture = ps.get_string("aperture", "");
+
+    lens_file = scene_relative(*lens_param, lens_file);
+    bool ok = readable(lens_file, *lens_param, diag, "lens file");
+    std::shared_ptr<const ApertureShape> shape;
+    if (!aperture.empty() && aperture != "circular") {
+        shape = builtin_aperture(aperture);
+        if (!shape) {
+            const Param& ap = *ps.find("aperture");
+            aperture = scene_relative(ap, aperture);
+            if (readable(aperture, ap, diag, "aperture image")) {
+                try {
+                    shape = image_aperture(read_image(aperture));
+                } catch (const Error& e) {
+                    throw Error(ap.loc, e.message());
+                }
+            } else {
+                ok = false;
+            }
+        }
+    }
+    // A stand-in while the build collects every missing file; it never renders.
+    if (!ok) return std::make_unique<PerspectiveCamera>(world_from_camera, film.width, film.height, 90.0f);
+
+    LensPrescription lens = read_lens_file(lens_file); // its errors name the lens file's line
+    double file_stop_mm = 0;
+    for (const LensSurfaceSpec& s : lens.surfaces)
+        if (s.is_stop()) file_stop_mm = s.aperture_mm;
+    double stop_mm = aperture_mm;
+    if (file_stop_mm > 0 && stop_mm > file_stop_mm) {
+        diag.unsupported(ps.find("aperturediameter")->loc,
+                         fmt::format("aperturediameter {} mm exceeds the lens file's stop, {} mm: clamped",
+                                     stop_mm, file_stop_mm));
+        stop_mm = file_stop_mm;
+    }
+    RealisticCamera::Settings settings;
+    settings.focus_distance = focus;
+    settings.film_diagonal = film.diagonal_mm * 1e-3;
+    try {
+        return std::make_unique<RealisticCamera>(world_from_camera, film.width, film.height,
+                                                 LensSystem::from_prescription(lens, stop_mm), shape,
+                                                 settings);
+    } catch (const Error& e) {
+        throw Error(c.loc, e.message());
+    }
+}
+
+} // namespace
+
 std::unique_ptr<Camera> create_camera(const CameraDesc& c, const FilmSettings& film, Diagnostics& diag) {
+    if (c.type == "realistic") return realistic_camera(c, film, diag);
     int w = film.width, h = film.height;
     Transform world_from_camera = c.camera_from_world.inverse();
     float lens_radius = c.params.get_float("lensradius", 0);
@@ -53,7 +147,7 @@ std::unique_ptr<Camera> create_camera(const CameraDesc& c, const FilmSettings& f
     if (c.type == "orthographic")
         return std::make_unique<OrthographicCamera>(world_from_camera, w, h, lens_radius, focal_distance,
                                                     &screen);
-    if (c.type == "realistic" || c.type == "spherical") {
+    if (c.type == "spherical") {
         diag.unsupported(c.loc, fmt::format("camera \"{}\" is approximated by a perspective camera", c.type));
         return std::make_unique<PerspectiveCamera>(world_from_camera, w, h, 90.0f);
     }

@@ -49,6 +49,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     // A debug pass's values are RGB in either mode and do not pass through the sensor.
     const bool spectral = options.spectral && integrator.radiometric();
     const bool radiometric = integrator.radiometric();
+    const bool dispersive_camera = spectral && scene.camera->is_dispersive();
 
     const bool timed = options.time_budget > 0;
     std::uint64_t pixels = std::uint64_t(w) * h;
@@ -67,11 +68,18 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                 tc.sampler.start_pixel_sample({x, y}, s);
                                 FilterSample fs = scene.filter->sample(tc.sampler.get_pixel_2d());
                                 Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
-                                Ray ray = scene.camera->generate_ray(p_film, tc.sampler.get_2d());
+                                Point2f u_lens = tc.sampler.get_2d();
                                 tc.lambda = spectral ? SampledWavelengths::sample_visible(tc.sampler.get_1d(),
                                                                                           scene.color_space)
                                                      : SampledWavelengths::rgb_mode();
-                                Radiance3 v = integrator.estimate(ray, tc);
+                                // RGB mode: the camera sees the d line. A dispersive lens sends each
+                                // wavelength its own way: the path keeps the hero only. A vignetted sample
+                                // adds zero radiance but still counts (its filter weight goes to the pixel).
+                                if (dispersive_camera) tc.lambda.terminate_secondary();
+                                std::optional<CameraRay> cr = scene.camera->generate_ray(
+                                    p_film, u_lens, spectral ? tc.lambda.hero() : kDLineNm);
+                                Radiance3 v(0.0f);
+                                if (cr) v = integrator.estimate(cr->ray, tc) * cr->weight;
                                 tc.arena.reset();
                                 if (!v.is_finite() || (reject_negative && v.has_negative())) {
                                     ++nonfinite;
