@@ -105,8 +105,8 @@ TEST(ConductorRgb, ExactFresnelFormulationsAgree) {
 }
 
 // The fitted index (illum's reduction) against the RGB of the spectral reflectance, 0..80°. Measured
-// worst case 0.0078 (Cu, red, 80°); gold's red channel is out of the sRGB gamut (1.02 at normal
-// incidence, more than any Fresnel reflectance) and is off by up to 0.045 (checked separately).
+// worst case 0.0081 (Cu, red, 80°); gold's red channel is out of the sRGB gamut (1.02 at normal
+// incidence, more than any Fresnel reflectance) and is off by up to 0.047 (checked separately).
 TEST(ConductorRgb, FittedIndexReproducesSpectralReflectance) {
     for (const MeasuredIndex& m : measured_indices()) {
         SCOPED_TRACE(std::string(m.element));
@@ -171,16 +171,18 @@ TEST(ConductorRgb, OldMitsubaValuesAgreeWithinMeasuredBound) {
 }
 
 // The worst reflectance error of illum's fit, 0..80° and all channels, that docs/verification.md and
-// conductor_rgb.h state (measured: Ag, Al 0.0002; Cu 0.0078; CuZn 0.0032; MgO, TiO2 below 0.00005), with a
+// conductor_rgb.h state (measured: Ag, Al 0.0002; Cu 0.0081; CuZn 0.0033; MgO, TiO2 below 0.00005), with a
 // margin of about 25% (at least 0.0001) so that a change of the fit or of the colour matching
 // functions that moves the table fails here and gets the documentation updated. Gold's red channel is
 // out of the sRGB gamut (F(0°) = 1.02, more than a Fresnel reflectance can reach), so the fit falls short
-// there by 0.0449 (its in-gamut channels are within 0.002); that shortfall is bounded too.
+// there by 0.0470 (its in-gamut channels are within 0.002); that shortfall is bounded too. (With the
+// analytic fit to the colour-matching functions used before the CIE's table it was 0.0449: the tabulated
+// functions make gold's red 1.022 instead of 1.020.)
 struct FitBound {
     const char* element;
     double all_channels, in_gamut;
 };
-const FitBound kFitBounds[] = {{"Ag", 0.0003, 0.0003},  {"Al", 0.0003, 0.0003},   {"Au", 0.046, 0.002},
+const FitBound kFitBounds[] = {{"Ag", 0.0003, 0.0003},  {"Al", 0.0003, 0.0003},   {"Au", 0.048, 0.002},
                                {"Cu", 0.0085, 0.0085},  {"CuZn", 0.0035, 0.0035}, {"MgO", 0.0001, 0.0001},
                                {"TiO2", 0.0001, 0.0001}};
 

@@ -66,7 +66,7 @@ Sensor::Sensor(const RGBColorSpace& output, float imaging_ratio, float white_bal
         double xyz[3];
         output.xyz_from_rgb(Color3(1.0f), xyz);
         dst = {xyz[0] / xyz[1], 1, xyz[2] / xyz[1]};
-        wb = white_balance(white_xyz(cie_daylight, white_balance_kelvin), dst);
+        wb = white_balance(white_xyz(white_balance_illuminant, white_balance_kelvin), dst);
     }
     Mat3 m = mul(rgb_from_xyz, wb);
     Mat3 m_rgb = mul(m, inverse(rgb_from_xyz));

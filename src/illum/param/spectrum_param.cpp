@@ -39,10 +39,6 @@ GivenSpectrum given_spectrum(const Param& p) {
             g.name = p.strings[0];
             return g;
         }
-        if (named_spectrum_rgb(p.strings[0])) { // PROVISIONAL until every name has its table
-            g.name = p.strings[0];
-            return g;
-        }
         const std::string& file = p.strings[0];
         std::ifstream in(file);
         if (!in)
