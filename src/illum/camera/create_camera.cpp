@@ -43,18 +43,6 @@ std::unique_ptr<Filter> create_filter(const EntityDesc& f, Diagnostics& diag) {
 
 namespace {
 
-// The parser reads the Camera directive's parameters without resolving file names, so a relative lens or
-// aperture file is taken against the folder of the scene file that names it (the position's file) here;
-// a name that is absolute, or that the parser did resolve, is kept.
-std::string scene_relative(const Param& p, const std::string& name) {
-    namespace fs = std::filesystem;
-    if (name.empty() || fs::path(name).is_absolute() || p.loc.file.empty()) return name;
-    fs::path joined = (fs::path(p.loc.file).parent_path() / name).lexically_normal();
-    std::error_code ec;
-    if (fs::exists(joined, ec) || !fs::exists(name, ec)) return joined.string();
-    return name;
-}
-
 bool readable(const std::string& path, const Param& p, Diagnostics& diag, const char* what) {
     if (std::ifstream(path)) return true;
     diag.missing_file(p.loc, fmt::format("cannot read {} \"{}\": {}", what, path, std::strerror(errno)));
@@ -75,14 +63,12 @@ std::unique_ptr<Camera> realistic_camera(const CameraDesc& c, const FilmSettings
     if (!(focus > 0)) throw Error(ps.find("focusdistance")->loc, "focusdistance must be positive");
     std::string aperture = ps.get_string("aperture", "");
 
-    lens_file = scene_relative(*lens_param, lens_file);
     bool ok = readable(lens_file, *lens_param, diag, "lens file");
     std::shared_ptr<const ApertureShape> shape;
     if (!aperture.empty() && aperture != "circular") {
         shape = builtin_aperture(aperture);
         if (!shape) {
             const Param& ap = *ps.find("aperture");
-            aperture = scene_relative(ap, aperture);
             if (readable(aperture, ap, diag, "aperture image")) {
                 try {
                     shape = image_aperture(read_image(aperture));

@@ -360,13 +360,17 @@ private:
             if (first_bool) wrong_kind(first_bool, "quoted strings", "bool");
             // File names resolve here, once, against the folder of the file that names them (the builder
             // and the create functions never join folders again): pbrt-v4's "filename", "normalmap" and
-            // "lensfile", and the "file" of illum's measured "merl" material (but for its built-in
-            // "synthetic:ALPHA" tables).
+            // "lensfile", the realistic camera's "aperture" image (but for its built-in shapes), and the
+            // "file" of illum's measured "merl" material (but for its built-in "synthetic:ALPHA" tables).
             if (resolve_files && p.type == ParamType::String &&
-                (p.name == "filename" || p.name == "normalmap" || p.name == "lensfile" || p.name == "file"))
-                for (auto& str : strs)
-                    if (!(p.name == "file" && str.rfind("synthetic:", 0) == 0))
-                        str = resolve_path(f.dir, str);
+                (p.name == "filename" || p.name == "normalmap" || p.name == "lensfile" || p.name == "file" ||
+                 p.name == "aperture"))
+                for (auto& str : strs) {
+                    bool builtin = (p.name == "file" && str.rfind("synthetic:", 0) == 0) ||
+                                   (p.name == "aperture" && (str == "circular" || str == "gaussian" ||
+                                                             str == "square" || str == "pentagon" || str == "star"));
+                    if (!builtin) str = resolve_path(f.dir, str);
+                }
             break;
         case ParamType::Spectrum:
             if (first_bool) wrong_kind(first_bool, "numbers or a quoted name", "bool");
@@ -578,7 +582,7 @@ private:
             if (!sc_.camera.type.empty())
                 warn(loc, fmt::format("a second Camera replaces the one at {}", sc_.camera.loc.to_string()));
             sc_.camera.type = read_string(f, d, "camera type");
-            sc_.camera.params = read_params(f, false);
+            sc_.camera.params = read_params(f, true);
             sc_.camera.loc = loc;
             sc_.camera.camera_from_world = gs_.ctm;
             sc_.camera.medium = gs_.outside_medium;
