@@ -5,8 +5,9 @@
 //   sRGB     [0.02, 0.98]³: 6.5e-4 (71³).  [0, 1]³ with no component 1: 1.1e-3, only at the dark pure
 //            red (0.028, 0, 0), which no sigmoid polynomial reaches (the table's dark saturated entries
 //            stall at up to 9e-4); every other point within 1e-3. With a component exactly 1 (the top z
-//            layer): 142 of the 389017 points exceed 1e-3, at most 0.0172 at (0.972, 0.986, 1), where
-//            the near-white targets are out of reach (no spectrum <= 1 has g = b = 1 and r < 1).
+//            layer): 140 of those 15769 points exceed 1e-3, at most 0.0172 at (0.972, 0.986, 1), where
+//            the near-white entries are out of the polynomials' reach (the best fit of (0.984, 1, 1) is
+//            2.5e-4 off) and their neighbours' coefficients differ wildly.
 //   rec2020, aces2065-1, dci-p3: see WideGamutsRoundTripOnSrgbColours.
 #include "illum/radiometry/rgb_to_spectrum.h"
 
@@ -141,6 +142,16 @@ TEST(RgbToSpectrum, WideGamutsRoundTripOnSrgbColours) {
         EXPECT_GT(shared.count, n * n * n / 2) << k.name;
         EXPECT_LE(shared.error, k.tolerance) << k.name << ": " << str(shared);
     }
+}
+
+// sRGB's primaries and secondaries are reflectances the polynomials reach (the fit's error there is below
+// 1e-9) and the table's corner entries are left exact: the round trip is within float evaluation
+// (measured at most 2.1e-6, at green).
+TEST(RgbToSpectrum, SrgbCornersAreExact) {
+    RoundTrip rt(RGBColorSpace::srgb());
+    for (Color3 c : {Color3(1, 0, 0), Color3(0, 1, 0), Color3(0, 0, 1), Color3(1, 1, 0), Color3(0, 1, 1),
+                     Color3(1, 0, 1)})
+        EXPECT_LT(rt.error(c), 1e-5f) << c.r << " " << c.g << " " << c.b;
 }
 
 // Greys use the closed form c0 = c1 = 0, c2 = (v - 1/2) / √(v (1 - v)): the spectrum is the constant v

@@ -14,7 +14,8 @@ namespace illum {
 // Every RGB <-> spectrum conversion here integrates over 360..830 nm (the CIE 1931 tables' range) by the
 // trapezoid rule on a grid of kSpectralStepNm: ∫ f dλ ≈ h (f0/2 + f1 + ... + f_{n-1} + f_n/2). The white
 // points, the illuminants' normalisation, the table generator and the round-trip tests share it, so a
-// constant spectrum comes back as exactly that grey.
+// constant spectrum comes back as exactly that grey. 1 nm, not 5: on sRGB's uplifted spectra a 5 nm sum
+// differs from a 1 nm one by up to 4.3e-4 in RGB, a 1 nm sum from a 0.25 nm one by 2e-5.
 inline constexpr double kSpectrumMinNm = 360, kSpectrumMaxNm = 830;
 inline constexpr double kSpectralStepNm = 1;
 

@@ -5,9 +5,11 @@
 //   rgb(c) = M_rgb←xyz ∫ s(λ) I(λ) (x̄, ȳ, z̄)(λ) dλ          (integrate_spectrum's grid)
 // and Levenberg-Marquardt drives the residual to zero, either rgb(c) - target (the default, which is what
 // the round trip measures) or, as the paper does, the difference in CIELAB (CIE 15:2004 §8.2.1, white =
-// the illuminant). The Jacobian is analytic: ∂s/∂c_k = S'(x) u^(2-k), S'(x) = 1 / (2 (1+x²)^(3/2)).
-// The fit works in the normalised wavelength u = (λ - 595 nm) / 235 nm ∈ [-1, 1], where the three
-// coefficients are of similar size (the paper also normalises λ); to_nm() converts for the runtime tables.
+// the illuminant). The two differ only for targets out of reach; measured on sRGB's tables the round
+// trip's largest errors are the same to 3 digits but for [0, 1]³, 0.0221 (RGB) against 0.0233 (CIELAB). The
+// Jacobian is analytic: ∂s/∂c_k = S'(x) u^(2-k), S'(x) = 1 / (2 (1+x²)^(3/2)). The fit works in the
+// normalised wavelength u = (λ - 595 nm) / 235 nm ∈ [-1, 1], where the three coefficients are of similar size
+// (the paper also normalises λ); to_nm() converts for the runtime tables.
 #pragma once
 
 #include <array>
