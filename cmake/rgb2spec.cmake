@@ -1,0 +1,35 @@
+# The RGB-to-spectrum tables (src/illum/radiometry/rgb_to_spectrum.h), computed at build time by illum's own
+# optimiser and embedded in illum_radiometry. Included from the module loop of CMakeLists.txt for
+# radiometry, with `sources` its .cpp files: everything but rgb_to_spectrum.cpp (which embeds the tables)
+# becomes the object library illum_radiometry_core, which the generator links; the module's library is
+# those objects plus rgb_to_spectrum.cpp, and `sources` is set to that.
+list(FILTER sources EXCLUDE REGEX "/rgb_to_spectrum\\.cpp$")
+add_library(illum_radiometry_core OBJECT ${sources})
+target_include_directories(illum_radiometry_core PUBLIC src)
+target_link_libraries(illum_radiometry_core PUBLIC ${ILLUM_BELOW})
+
+add_executable(illum_rgb2spec_opt tools/rgb2spec_opt.cpp)
+target_link_libraries(illum_rgb2spec_opt PRIVATE illum_radiometry_core TBB::tbb)
+
+set(ILLUM_RGB2SPEC_DIR ${CMAKE_BINARY_DIR}/rgb2spec)
+set(ILLUM_RGB2SPEC_TABLES)
+foreach(space srgb rec2020 aces2065-1 dci-p3)
+    list(APPEND ILLUM_RGB2SPEC_TABLES ${ILLUM_RGB2SPEC_DIR}/${space}.bin)
+endforeach()
+add_custom_command(
+    OUTPUT ${ILLUM_RGB2SPEC_TABLES}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${ILLUM_RGB2SPEC_DIR}
+    COMMAND illum_rgb2spec_opt ${ILLUM_RGB2SPEC_DIR}
+    DEPENDS illum_rgb2spec_opt
+    COMMENT "Computing the RGB-to-spectrum tables (illum_rgb2spec_opt)"
+    VERBATIM)
+
+set(embed ${PROJECT_SOURCE_DIR}/src/illum/radiometry/rgb_to_spectrum.cpp)
+set_source_files_properties(${embed} PROPERTIES OBJECT_DEPENDS "${ILLUM_RGB2SPEC_TABLES}"
+                            COMPILE_DEFINITIONS "ILLUM_RGB2SPEC_DIR=\"${ILLUM_RGB2SPEC_DIR}\"")
+set(sources ${embed} $<TARGET_OBJECTS:illum_radiometry_core>)
+
+# The fit's inner sums: let them vectorise (the `omp simd` reductions) and sqrt be an instruction. The
+# order of the sums then depends on the vector width, which changes the tables only below their tolerance.
+set_source_files_properties(${PROJECT_SOURCE_DIR}/src/illum/radiometry/sigmoid_fit.cpp PROPERTIES
+                            COMPILE_OPTIONS "-fopenmp-simd;-fno-math-errno")

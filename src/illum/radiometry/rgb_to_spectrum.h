@@ -1,0 +1,81 @@
+// The RGB -> sigmoid-polynomial tables of Jakob & Hanika 2019 §5 and their lookup.
+//
+// Three tables per colour space, one for each component that is the largest (i = argmax rgb); each holds
+// res³ entries of the three coefficients (in λ [nm], RGBSigmoidPolynomial) over
+//   z = rgb_i on a grid z_k = smoothstep(smoothstep(k / (res-1))), smoothstep(t) = 3t² - 2t³, dense near
+//     0 and 1 where the coefficients change fastest (dark colours, and bright saturated ones);
+//   x = rgb_(i+1)%3 / z and y = rgb_(i+2)%3 / z on uniform grids over [0, 1].
+// An RGB is looked up by trilinear interpolation of the coefficients. The tables are computed by illum's
+// own optimiser (sigmoid_fit.h) at build time (tools/rgb2spec_opt.cpp) and embedded in the library.
+//
+// Measured choices (sRGB round trip on 71³ points of [0, 0.98]³, tables without the generator's
+// interpolation correction): z grids uniform 8.2e-3 (1162 points above 1e-3), smoothstep 1.5e-3 (48),
+// smoothstep² 1.4e-3 (21), smoothstep³ 7.6e-3 (3612); resolutions 48: 4.0e-3, 64: 1.4e-3, 96: 7.7e-4
+// (3.4x the 9.4 MB per space). 64 it is, with the correction bringing it to 6.5e-4.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+#include "illum/radiometry/color_space.h"
+
+namespace illum {
+
+struct RGBToSpectrumTable {
+    static constexpr int kResolution = 64;
+
+    int res = 0;
+    const float* z = nullptr;      // res grid values of the largest component
+    const float* coeffs = nullptr; // [3 (argmax)][res (z)][res (y)][res (x)][3 (c0, c1, c2)]
+
+    static double z_node(int k, int res) {
+        auto smoothstep = [](double t) { return t * t * (3 - 2 * t); };
+        return smoothstep(smoothstep(double(k) / (res - 1)));
+    }
+    static std::size_t offset(int i, int zi, int yi, int xi, int res) {
+        return 3 * (((std::size_t(i) * res + zi) * res + yi) * res + xi);
+    }
+
+    // Grey r = g = b = v has the exact constant spectrum v: c0 = c1 = 0, c2 = S⁻¹(v) = (v - 1/2) / √(v (1-v))
+    // (±∞ for white and black).
+    static RGBSigmoidPolynomial grey(float v) {
+        if (v <= 0) return {0, 0, -INFINITY};
+        if (v >= 1) return {0, 0, INFINITY};
+        return {0, 0, (v - 0.5f) / std::sqrt(v * (1 - v))};
+    }
+
+    RGBSigmoidPolynomial lookup(Color3 rgb) const {
+        rgb = clamp(rgb, 0, 1);
+        if (rgb.r == rgb.g && rgb.g == rgb.b) return grey(rgb.r);
+        int i = rgb.r >= rgb.g ? (rgb.r >= rgb.b ? 0 : 2) : (rgb.g >= rgb.b ? 1 : 2);
+        float zv = rgb[i], scale = (res - 1) / zv;
+        float x = rgb[(i + 1) % 3] * scale, y = rgb[(i + 2) % 3] * scale;
+        int xi = std::min(int(x), res - 2), yi = std::min(int(y), res - 2);
+        // The last node at or below zv among z[0..res-2].
+        int zi = int(std::upper_bound(z + 1, z + res - 1, zv) - z) - 1;
+        float dx = x - xi, dy = y - yi, dz = (zv - z[zi]) / (z[zi + 1] - z[zi]);
+        float c[3] = {0, 0, 0};
+        for (int corner = 0; corner < 8; ++corner) {
+            int ox = corner & 1, oy = (corner >> 1) & 1, oz = corner >> 2;
+            float w = (ox ? dx : 1 - dx) * (oy ? dy : 1 - dy) * (oz ? dz : 1 - dz);
+            const float* e = coeffs + offset(i, zi + oz, yi + oy, xi + ox, res);
+            c[0] += w * e[0], c[1] += w * e[1], c[2] += w * e[2];
+        }
+        return {c[0], c[1], c[2]};
+    }
+};
+
+// The generator's file (one per colour space, embedded by rgb_to_spectrum.cpp): this header, then the
+// res z nodes and the coefficients as little-endian float, laid out as RGBToSpectrumTable says.
+struct RGBToSpectrumFileHeader {
+    char magic[8] = {'I', 'L', 'R', 'G', 'B', '2', 'S', '1'};
+    std::uint32_t res = 0;
+    std::uint32_t floats = 0; // res + 3 res³ · 3
+};
+
+// The embedded table of a named colour space (RGBColorSpace::index()).
+const RGBToSpectrumTable& rgb_to_spectrum_table(int space_index);
+
+} // namespace illum
