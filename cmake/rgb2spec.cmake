@@ -1,9 +1,9 @@
 # The RGB-to-spectrum tables (src/illum/radiometry/rgb_to_spectrum.h), computed at build time by illum's own
 # optimiser and embedded in illum_radiometry. Included from the module loop of CMakeLists.txt for
 # radiometry, with `sources` its .cpp files: everything but rgb_to_spectrum.cpp (which embeds the tables)
-# becomes the object library illum_radiometry_core, which the generator links; the module's library is
-# those objects plus rgb_to_spectrum.cpp, and `sources` is set to that.
-list(FILTER sources EXCLUDE REGEX "/rgb_to_spectrum\\.cpp$")
+# and uplift.cpp (which looks them up) becomes the object library illum_radiometry_core, which the
+# generator links; the module's library is those objects plus the two, and `sources` is set to that.
+list(FILTER sources EXCLUDE REGEX "/(rgb_to_spectrum|uplift)\\.cpp$")
 add_library(illum_radiometry_core OBJECT ${sources})
 target_include_directories(illum_radiometry_core PUBLIC src)
 target_link_libraries(illum_radiometry_core PUBLIC ${ILLUM_BELOW})
@@ -27,7 +27,7 @@ add_custom_command(
 set(embed ${PROJECT_SOURCE_DIR}/src/illum/radiometry/rgb_to_spectrum.cpp)
 set_source_files_properties(${embed} PROPERTIES OBJECT_DEPENDS "${ILLUM_RGB2SPEC_TABLES}"
                             COMPILE_DEFINITIONS "ILLUM_RGB2SPEC_DIR=\"${ILLUM_RGB2SPEC_DIR}\"")
-set(sources ${embed} $<TARGET_OBJECTS:illum_radiometry_core>)
+set(sources ${embed} ${PROJECT_SOURCE_DIR}/src/illum/radiometry/uplift.cpp $<TARGET_OBJECTS:illum_radiometry_core>)
 
 # The fit's inner sums: let them vectorise (the `omp simd` reductions) and sqrt be an instruction. The
 # order of the sums then depends on the vector width, which changes the tables only below their tolerance.

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "illum/radiometry/color.h"
+#include "illum/radiometry/spectra.h"
 
 namespace illum {
 
@@ -45,9 +46,6 @@ struct RGBSigmoidPolynomial {
     float max_value() const;
 };
 
-struct Chromaticity {
-    double x = 0, y = 0;
-};
 
 class RGBColorSpace {
 public:

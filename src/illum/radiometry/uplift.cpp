@@ -1,6 +1,7 @@
 #include "illum/radiometry/uplift.h"
 
 #include <algorithm>
+#include <array>
 
 #include "illum/radiometry/densely_sampled_spectrum.h"
 
@@ -21,22 +22,16 @@ UpliftedRgb uplift_unbounded_poly(Color3 rgb, const RGBColorSpace& cs) {
 }
 
 SampledSpectrum illuminant_at(const RGBColorSpace& cs, const SampledWavelengths& w) {
-    // One table per colour space, built on first use (thread-safe static initialisation).
-    struct Tables {
-        const RGBColorSpace* cs;
-        DenselySampledSpectrum d;
-    };
-    static const Tables tables[] = {
-        {RGBColorSpace::named("srgb"), {}}, {RGBColorSpace::named("rec2020"), {}},
-        {RGBColorSpace::named("aces2065-1"), {}}, {RGBColorSpace::named("dci-p3"), {}}};
-    static const DenselySampledSpectrum dense[] = {
-        DenselySampledSpectrum::from([](double l) { return tables[0].cs->illuminant(l); }),
-        DenselySampledSpectrum::from([](double l) { return tables[1].cs->illuminant(l); }),
-        DenselySampledSpectrum::from([](double l) { return tables[2].cs->illuminant(l); }),
-        DenselySampledSpectrum::from([](double l) { return tables[3].cs->illuminant(l); })};
-    for (int i = 0; i < 4; ++i)
-        if (tables[i].cs == &cs) return dense[i].sample(w);
-    return DenselySampledSpectrum::from([&](double l) { return cs.illuminant(l); }).sample(w);
+    // Each space's illuminant tabulated at every nanometre, once (thread-safe static initialisation).
+    static const auto tables = [] {
+        std::array<DenselySampledSpectrum, RGBColorSpace::kCount> t;
+        for (int i = 0; i < RGBColorSpace::kCount; ++i) {
+            const RGBColorSpace& c = RGBColorSpace::by_index(i);
+            t[std::size_t(i)] = DenselySampledSpectrum::from([&](double l) { return c.illuminant(l); });
+        }
+        return t;
+    }();
+    return tables[std::size_t(cs.index())].sample(w);
 }
 
 } // namespace illum
