@@ -23,6 +23,7 @@ struct BenchArgs {
     std::string resolution = "512x512";
     std::uint64_t rays = 4'000'000;
     bool json = false;
+    bool spectral = false;
 };
 
 void run(const BenchArgs& args) {
@@ -44,6 +45,14 @@ void run(const BenchArgs& args) {
     RenderResult r = render(*scene, *integrator, opt);
     double path_rays = r.rays / r.seconds, samples = r.samples / r.seconds;
     double ratio = path_rays / raw.rays_per_second();
+    // Spectral mode's cost per camera sample against RGB mode's, the same render at four wavelengths.
+    double spectral_samples = 0, spectral_rays_per_sample = 0;
+    if (args.spectral) {
+        opt.spectral = true;
+        RenderResult s = render(*scene, *integrator, opt);
+        spectral_samples = s.samples / s.seconds;
+        spectral_rays_per_sample = double(s.rays) / s.samples;
+    }
 
     if (args.json) {
         nlohmann::json j = {{"scene", args.scene.empty() ? "<built-in cornell-box>" : args.scene},
@@ -56,6 +65,11 @@ void run(const BenchArgs& args) {
                             {"path_rays_per_sample", double(r.rays) / r.samples},
                             {"ratio", ratio},
                             {"version", ILLUM_VERSION}};
+        if (args.spectral) {
+            j["spectral_samples_per_second"] = spectral_samples;
+            j["spectral_rays_per_sample"] = spectral_rays_per_sample;
+            j["spectral_cost_per_sample"] = samples / spectral_samples;
+        }
         fmt::print("{}\n", j.dump(2));
         return;
     }
@@ -67,6 +81,10 @@ void run(const BenchArgs& args) {
         "  path tracer                          : {:10.2f} Mrays/s, {:.2f} Msamples/s ({:.2f} rays/sample)\n",
         path_rays / 1e6, samples / 1e6, double(r.rays) / r.samples);
     fmt::print("  path tracer / raw Embree             : {:10.1f} %\n", 100 * ratio);
+    if (args.spectral)
+        fmt::print("  spectral mode                        : {:10.2f} Msamples/s ({:.2f} rays/sample): {:.3f}x "
+                   "RGB mode's time per sample\n",
+                   spectral_samples / 1e6, spectral_rays_per_sample, samples / spectral_samples);
 }
 
 } // namespace
@@ -84,6 +102,8 @@ void add_bench_command(CLI::App& app) {
     cmd->add_option("--rays", args->rays, "Number of incoherent rays for the raw Embree rate")
         ->check(positive_integer());
     cmd->add_flag("--json", args->json, "Print the figures as JSON");
+    cmd->add_flag("--spectral", args->spectral,
+                  "Also render in spectral mode and report its cost per camera sample against RGB mode's");
     cmd->callback([args] { run(*args); });
 }
 

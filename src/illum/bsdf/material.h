@@ -26,7 +26,7 @@ class DiffuseMaterial final : public Material {
 public:
     explicit DiffuseMaterial(const ColorTexture* reflectance) : reflectance_(reflectance) {}
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
-        SampledSpectrum r = uplift_albedo(reflectance_->evaluate(hit), lambda);
+        SampledSpectrum r = reflectance_->albedo(hit, lambda);
         return BSDF(arena.make<LambertBxDF>(r), hit.shading_frame());
     }
     Color3 albedo(const SurfaceHit& hit) const override {

@@ -89,7 +89,7 @@ public:
     void index(const SurfaceHit& hit, const SampledWavelengths& lambda, SampledSpectrum* eta,
                SampledSpectrum* k) const {
         if (reflectance_) {
-            SampledSpectrum r = clamp(uplift_albedo(reflectance_->evaluate(hit), lambda), 0.0f, 0.9999f);
+            SampledSpectrum r = clamp(reflectance_->albedo(hit, lambda), 0.0f, 0.9999f);
             *eta = SampledSpectrum(1.0f);
             *k = 2 * sqrt(r) / sqrt(SampledSpectrum(1.0f) - r);
         } else {
@@ -136,7 +136,7 @@ struct LayerParams {
     int max_depth = 10, samples = 1;
 
     LayerMedium medium(const SurfaceHit& hit, const SampledWavelengths& lambda) const {
-        return {std::max(0.0f, thickness->evaluate(hit)), uplift_albedo(albedo->evaluate(hit), lambda),
+        return {std::max(0.0f, thickness->evaluate(hit)), albedo->albedo(hit, lambda),
                 std::clamp(g->evaluate(hit), -0.99f, 0.99f)};
     }
 };
@@ -149,7 +149,7 @@ public:
                           LayerParams layer)
         : reflectance_(reflectance), eta_(std::move(eta)), coat_(coat), layer_(layer) {}
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
-        SampledSpectrum r = uplift_albedo(reflectance_->evaluate(hit), lambda);
+        SampledSpectrum r = reflectance_->albedo(hit, lambda);
         return BSDF(arena.make<CoatedDiffuseBxDF>(DielectricInterface(eta_.at(lambda), coat_.alpha(hit)),
                                                   LambertBxDF(r), layer_.medium(hit, lambda), layer_.max_depth,
                                                   layer_.samples),

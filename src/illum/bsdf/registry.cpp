@@ -704,6 +704,8 @@ ModelArg model_arg(const ModelSpec& model, const ParamSpec& spec, const Param& p
                             "must be in [" + fmt_num(spec.min) + ", " + fmt_num(spec.max) + "], got " +
                                 value_text(p));
         a.constant = v.size() == 3 ? Color3(float(v[0]), float(v[1]), float(v[2])) : Color3(float(v[0]));
+        if (spec.kind == ParamKind::Rgb)
+            a.uplifted = UpliftCache(a.constant, spec.max <= 1 ? UpliftKind::Albedo : UpliftKind::Unbounded);
         return a;
     }
     case ParamKind::Choice: {

@@ -71,6 +71,8 @@ struct ModelArg {
     // A parameter given as a spectrum (a named metal's η, a glass's index): its table for spectral mode
     // (`constant` holds its RGB or mean reduction for RGB mode).
     std::shared_ptr<const DenselySampledSpectrum> spectrum;
+    // A constant Rgb parameter's spectrum in each colour space (uplifted once; `spectrum()` reads it).
+    UpliftCache uplifted;
     float lo = 0, hi = 0;
     ParamKind kind = ParamKind::Scalar;
     std::string text; // Choice, Path
@@ -161,7 +163,7 @@ inline Color3 ModelArgs::rgb(ParamId id) const {
 inline SampledSpectrum ModelArgs::spectrum(ParamId id) const {
     if (!w_ || !w_->spectral()) return SampledSpectrum(rgb(id));
     const ModelArg& v = get(id);
-    if (v.spectrum && !v.color) return clamp(v.spectrum->sample(*w_), v.lo, v.hi);
+    if (!v.color) return v.spectrum ? clamp(v.spectrum->sample(*w_), v.lo, v.hi) : v.uplifted.at(*w_);
     Color3 c = rgb(id);
     return v.hi <= 1 ? uplift_albedo(c, *w_) : uplift_unbounded(c, *w_);
 }

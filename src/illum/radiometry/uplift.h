@@ -6,6 +6,9 @@
 // clamped to [0, 1]).
 #pragma once
 
+#include <array>
+#include <cstdint>
+
 #include "illum/radiometry/color_space.h"
 #include "illum/radiometry/sampled_wavelengths.h"
 
@@ -41,5 +44,27 @@ inline SampledSpectrum uplift_illuminant(Color3 rgb, const SampledWavelengths& w
     if (!w.spectral()) return SampledSpectrum(rgb);
     return sample(uplift_unbounded_poly(rgb, *w.color_space), w) * illuminant_at(*w.color_space, w);
 }
+
+// One constant RGB value's polynomial in every colour space, computed once (a constant texture or
+// parameter), so spectral mode does not look the table up at every hit.
+enum class UpliftKind : std::uint8_t { Albedo, Unbounded };
+class UpliftCache {
+public:
+    UpliftCache() = default;
+    UpliftCache(Color3 rgb, UpliftKind kind) : rgb_(kind == UpliftKind::Albedo ? clamp(rgb, 0.0f, 1.0f) : rgb) {
+        for (int i = 0; i < RGBColorSpace::kCount; ++i) {
+            const RGBColorSpace& cs = RGBColorSpace::by_index(i);
+            poly_[std::size_t(i)] = kind == UpliftKind::Albedo ? uplift_albedo_poly(rgb, cs) : uplift_unbounded_poly(rgb, cs);
+        }
+    }
+    SampledSpectrum at(const SampledWavelengths& w) const {
+        if (!w.spectral()) return SampledSpectrum(rgb_);
+        return sample(poly_[std::size_t(w.color_space->index())], w);
+    }
+
+private:
+    Color3 rgb_;
+    std::array<UpliftedRgb, RGBColorSpace::kCount> poly_{};
+};
 
 } // namespace illum

@@ -8,6 +8,7 @@
 
 #include "illum/math/vector.h"
 #include "illum/radiometry/color.h"
+#include "illum/radiometry/uplift.h"
 
 namespace illum {
 
@@ -22,6 +23,10 @@ class ColorTexture {
 public:
     virtual ~ColorTexture() = default;
     virtual Color3 evaluate(const TextureEvalContext& hit) const = 0;
+    // The value as a reflectance at the path's wavelengths (uplift.h): what a material's reflectance reads.
+    virtual SampledSpectrum albedo(const TextureEvalContext& hit, const SampledWavelengths& w) const {
+        return uplift_albedo(evaluate(hit), w);
+    }
 };
 
 class FloatTexture {
@@ -32,12 +37,16 @@ public:
 
 class ConstantColorTexture final : public ColorTexture {
 public:
-    explicit ConstantColorTexture(Color3 c) : value_(c) {}
+    explicit ConstantColorTexture(Color3 c) : value_(c), albedo_(c, UpliftKind::Albedo) {}
     Color3 evaluate(const TextureEvalContext&) const override { return value_; }
+    SampledSpectrum albedo(const TextureEvalContext&, const SampledWavelengths& w) const override {
+        return albedo_.at(w);
+    }
     Color3 value() const { return value_; }
 
 private:
     Color3 value_;
+    UpliftCache albedo_;
 };
 
 class ConstantFloatTexture final : public FloatTexture {
