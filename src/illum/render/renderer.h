@@ -35,6 +35,16 @@ struct RenderResult {
     int threads = 0;
 };
 
+// An integrator that renders the whole image itself rather than one camera sample at a time (light
+// tracing splats particles onto the film, photon mapping runs iterations): render() hands over to it.
+class WholeImageIntegrator : public Integrator {
+public:
+    using Integrator::Integrator;
+    virtual RenderResult render_image(const RenderOptions& options) const = 0;
+    // Not a per-camera-sample estimator.
+    Radiance3 estimate(const Ray&, ThreadContext&) const override { return {}; }
+};
+
 RenderResult render(const Scene& scene, const Integrator& integrator, const RenderOptions& options);
 
 } // namespace illum
