@@ -293,3 +293,79 @@ TEST(SpectralMode, LosslessPrismConservesEnergy) {
 
 } // namespace
 } // namespace illum
+
+namespace illum {
+namespace {
+
+// A film filled by an emitter seen head-on: every pixel is the emitter's radiance in the output space.
+std::string emitter_view(const std::string& color_space, const std::string& emission, const std::string& film_extra,
+                         const std::string& camera_extra = "") {
+    return fmt::format(R"(
+ColorSpace "{}"
+Camera "orthographic" {}
+Film "rgb" "integer xresolution" [8] "integer yresolution" [8] {}
+Sampler "independent"
+WorldBegin
+AreaLightSource "diffuse" {} "bool twosided" true
+Material "diffuse" "rgb reflectance" [0 0 0]
+Shape "trianglemesh" "point3 P" [ -5 -5 1  5 -5 1  5 5 1  -5 5 1 ] "integer indices" [ 0 1 2 0 2 3 ]
+)",
+                       color_space, camera_extra, film_extra, emission);
+}
+
+Color3 mean_of(const Image& img) { return img.channel_mean(); }
+
+// In every colour space, an RGB emitter seen directly renders as that RGB in spectral mode too: the
+// emitter's RGB is uplifted in the scene's space and the film writes the same space. Tolerance: the
+// uplift round trip (≤ 2·10⁻³ over sRGB's colours in the wide spaces, relative to the largest component
+// here) plus 4 standard errors of the wavelength sampling noise.
+TEST(SpectralMode, ColorSpacesRoundTripThroughTheFilm) {
+    const Color3 rgb(0.8f, 0.4f, 0.2f);
+    for (const char* cs : {"srgb", "rec2020", "aces2065-1", "dci-p3"}) {
+        test::RenderSetup s;
+        s.spp = 1024;
+        s.spectral = true;
+        s.max_depth = 1;
+        std::string scene = emitter_view(cs, fmt::format("\"rgb L\" [{} {} {}]", rgb.r, rgb.g, rgb.b), "");
+        Image img = test::render_pbrt(scene, s).image;
+        Color3 m = mean_of(img);
+        std::printf("%s: (%.4f %.4f %.4f) for (0.8 0.4 0.2)\n", cs, m.r, m.g, m.b);
+        for (int c = 0; c < 3; ++c) {
+            test::MeanEstimate e = test::pixel_mean(img, c);
+            EXPECT_NEAR(e.mean, rgb[c], 0.8 * 3e-3 + 4 * e.standard_error) << cs << " channel " << c;
+        }
+        s.spectral = false; // RGB mode: exactly the input
+        Color3 r = mean_of(test::render_pbrt(scene, s).image);
+        for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(r[c], rgb[c]) << cs;
+    }
+}
+
+// pbrt-v4's sensor parameters: a CIE illuminant A emitter (luminance 1), white-balanced for 2856 K,
+// renders neutral (r = g = b within the noise; unbalanced it is orange, r/b > 2); "iso" 200 doubles the
+// image; an exposure of 0.5 s (shutterclose - shutteropen) halves it.
+TEST(SpectralMode, SensorWhiteBalanceIsoAndExposure) {
+    test::RenderSetup s;
+    s.spp = 1024;
+    s.spectral = true;
+    s.max_depth = 1;
+    const std::string a = R"("spectrum L" "stdillum-A")";
+    Color3 plain = mean_of(test::render_pbrt(emitter_view("srgb", a, ""), s).image);
+    Color3 balanced = mean_of(test::render_pbrt(emitter_view("srgb", a, R"("float whitebalance" [2856])"), s).image);
+    std::printf("illuminant A: (%.4f %.4f %.4f); white-balanced for 2856 K: (%.4f %.4f %.4f)\n", plain.r, plain.g,
+                plain.b, balanced.r, balanced.g, balanced.b);
+    EXPECT_GT(plain.r / plain.b, 2);
+    EXPECT_NEAR(balanced.r / balanced.g, 1, 0.01);
+    EXPECT_NEAR(balanced.b / balanced.g, 1, 0.01);
+    Color3 iso = mean_of(test::render_pbrt(emitter_view("srgb", a, R"("float iso" [200])"), s).image);
+    Color3 half = mean_of(
+        test::render_pbrt(emitter_view("srgb", a, "", R"("float shutteropen" [0] "float shutterclose" [0.5])"), s).image);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(iso[c], 2 * plain[c], 1e-4 * plain[c]) << c; // the same samples, scaled
+        EXPECT_NEAR(half[c], 0.5f * plain[c], 1e-4 * plain[c]) << c;
+    }
+    // The luminance of a luminance-1 illuminant is 1.
+    EXPECT_NEAR(plain.luminance(), 1, 0.01);
+}
+
+} // namespace
+} // namespace illum
