@@ -128,9 +128,8 @@ Prism make_prism() {
     return p;
 }
 
-// The raster column whose ray reaches the slit's centre at wavelength λ (bisection).
-double predicted_column(const Prism& p, double nm) {
-    double n = sf11_index(nm);
+// The raster column whose ray reaches the slit's centre for a prism of index n (bisection).
+double predicted_column(const Prism& p, double n) {
     auto side = [&](double x) {
         V2 o, d;
         if (!through_prism(p, x, n, &o, &d)) return std::nan("");
@@ -149,7 +148,7 @@ double predicted_column(const Prism& p, double nm) {
             slo = a;
         }
     }
-    EXPECT_GE(lo, 0) << "the slit is not within the image at " << nm << " nm";
+    EXPECT_GE(lo, 0) << "the slit is not within the image at index " << n;
     for (int i = 0; i < 60; ++i) {
         double mid = 0.5 * (lo + hi), sm = side(mid);
         if ((sm < 0) == (slo < 0)) {
@@ -165,7 +164,7 @@ double predicted_column(const Prism& p, double nm) {
 // max_depth 2 (two refractions) for the deviation test: the beam that crosses the prism once, without the
 // ghosts of internal reflections.
 std::string prism_scene(const Prism& p, const std::string& light_spectrum, const std::string& world_extra,
-                        int max_depth) {
+                        int max_depth, const std::string& eta = R"("spectrum eta" "glass-F11")") {
     auto pt = [](V2 v, double y) { return fmt::format("{} {} {}", v.x, y, v.z); };
     const double y = 20;
     std::string prism = fmt::format(
@@ -189,14 +188,14 @@ Sampler "independent"
 WorldBegin
 {extra}
 AttributeBegin
-  Material "dielectric" "spectrum eta" "glass-F11"
+  Material "dielectric" {eta}
   {prism}
 AttributeEnd
 {slit}
 )",
                        fmt::arg("hw", -kHalfWidth), fmt::arg("hw2", kHalfWidth),
                        fmt::arg("vh", kHalfWidth * kH / kW), fmt::arg("w", kW), fmt::arg("h", kH),
-                       fmt::arg("extra", world_extra), fmt::arg("prism", prism), fmt::arg("slit", slit), fmt::arg("depth", max_depth));
+                       fmt::arg("extra", world_extra), fmt::arg("prism", prism), fmt::arg("slit", slit), fmt::arg("depth", max_depth), fmt::arg("eta", eta));
 }
 
 // The centroid column of the image's main spot. The slit is seen along more than one path through the
@@ -245,7 +244,7 @@ TEST(SpectralMode, PrismDeviatesEachBandAsSnellsLawWithTheGlassIndex) {
         s.seed = 3;
         Image img = test::render_pbrt(prism_scene(p, band, "", 2), s).image;
         double total = 0, measured = centroid_column(img, &total);
-        double predicted = predicted_column(p, centre);
+        double predicted = predicted_column(p, sf11_index(centre));
         std::printf("%.0f nm band (n = %.5f): slit seen at column %.2f, Snell's law predicts %.2f\n", centre,
                     sf11_index(centre), measured, predicted);
         ASSERT_GT(total, 0) << centre << " nm: the slit is not seen";
@@ -255,6 +254,50 @@ TEST(SpectralMode, PrismDeviatesEachBandAsSnellsLawWithTheGlassIndex) {
             EXPECT_GT(std::abs(measured - previous), 10) << "bands not separated";
         }
         previous = measured;
+    }
+}
+
+// illum's dispersion formulas: "sellmeier eta" with SF11's coefficients disperses as the named glass, and
+// a "cauchy eta" fitted to SF11 at 486 and 656 nm deviates the 450 nm band where Snell's law with that
+// two-term index says (a column off the Sellmeier glass's: the fit is not exact at 450 nm).
+TEST(SpectralMode, SellmeierAndCauchyIndicesDisperse) {
+    Prism p = make_prism();
+    std::string band = "444.99 0 445 1 455 1 455.01 0";
+    test::RenderSetup s;
+    s.spp = 512;
+    s.spectral = true;
+    s.seed = 3;
+    double total = 0;
+    double named = centroid_column(test::render_pbrt(prism_scene(p, band, "", 2), s).image, &total);
+    double sellmeier = centroid_column(
+        test::render_pbrt(prism_scene(p, band, "", 2,
+                                      R"("sellmeier eta" [1.73759695 0.313747346 1.89878101 0.013188707 0.0623068142 155.23629])"),
+                          s)
+            .image,
+        &total);
+    // n = A + B / λ² through SF11's n_F and n_C.
+    double lf = 0.48613, lc = 0.65627, nf = sf11_index(486.13), nc = sf11_index(656.27);
+    double b = (nf - nc) / (1 / (lf * lf) - 1 / (lc * lc)), a = nf - b / (lf * lf);
+    double cauchy = centroid_column(
+        test::render_pbrt(prism_scene(p, band, "", 2, fmt::format(R"("cauchy eta" [{} {}])", a, b)), s).image, &total);
+    double cauchy_predicted = predicted_column(p, a + b / (0.45 * 0.45));
+    std::printf("450 nm band: glass-F11 %.2f, sellmeier %.2f (Snell's law %.2f); cauchy %.2f (Snell's law with its "
+                "index %.2f)\n",
+                named, sellmeier, predicted_column(p, sf11_index(450)), cauchy, cauchy_predicted);
+    EXPECT_NEAR(sellmeier, named, 0.3);
+    EXPECT_NEAR(cauchy, cauchy_predicted, 1.0);
+}
+
+TEST(SpectralMode, DispersionFormulaErrorsNameTheirPosition) {
+    for (const char* bad : {R"("sellmeier eta" [1 2 3])", R"("cauchy eta" [1.5])", R"("cauchy eta" "glass-BK7")",
+                            R"("cauchy eta" [-5 0.01])"}) {
+        std::string scene = fmt::format("WorldBegin\nMaterial \"dielectric\" {}\nShape \"sphere\"\n", bad);
+        try {
+            test::render_pbrt(scene);
+            ADD_FAILURE() << bad << " was accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("<test>:2:"), std::string::npos) << e.what();
+        }
     }
 }
 

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "illum/radiometry/glass.h"
 #include "illum/radiometry/named_spectra.h"
 #include "illum/radiometry/spectra.h"
 
@@ -30,6 +31,23 @@ GivenSpectrum given_spectrum(const Param& p) {
         if (p.numbers.empty() || !(p.numbers[0] > 0))
             throw Error(p.loc, "blackbody needs a positive temperature");
         g.kelvin = p.numbers[0];
+        return g;
+    }
+    // An index of refraction by its dispersion formula, tabulated at every nanometre of 360..830.
+    if (p.strings.size() == 1 && (p.strings[0] == "sellmeier" || p.strings[0] == "cauchy")) {
+        bool sellmeier = p.strings[0] == "sellmeier";
+        if (p.numbers.size() != (sellmeier ? 6u : 2u))
+            throw Error(p.loc, fmt::format("{} needs {} values", p.strings[0], sellmeier ? 6 : 2));
+        for (double v : p.numbers)
+            if (!std::isfinite(v)) throw Error(p.loc, fmt::format("{} values must be finite", p.strings[0]));
+        for (int l = 360; l <= 830; ++l) {
+            double n = sellmeier ? sellmeier_index(l, p.numbers.data(), p.numbers.data() + 3)
+                                 : cauchy_index(l, p.numbers[0], p.numbers[1]);
+            if (!(n > 0) || !std::isfinite(n))
+                throw Error(p.loc, fmt::format("{} gives no real index at {} nm", p.strings[0], l));
+            g.table.lambda.push_back(l);
+            g.table.value.push_back(n);
+        }
         return g;
     }
     std::vector<double> v;
@@ -115,10 +133,14 @@ DenselySampledSpectrum spectrum_param_dense(const Param& p, SpectrumKind kind) {
 
 float spectrum_param_mean(const Param& p, Diagnostics* diag) {
     float mean = spectrum_param_rgb(p, SpectrumKind::Unbounded).average();
-    bool named_glass = p.strings.size() == 1 && p.strings[0].rfind("glass-", 0) == 0;
-    if (!named_glass && diag)
-        diag->unsupported(
-            p.loc, fmt::format("spectrally varying \"{}\" is rendered with its mean {:.4g}", p.name, mean));
+    // A named glass or a dispersion formula asks for dispersion, which spectral mode renders; any other
+    // spectrum given for a scalar is worth a word about RGB mode.
+    bool dispersive = p.strings.size() == 1 && (p.strings[0].rfind("glass-", 0) == 0 || p.strings[0] == "sellmeier" ||
+                                                p.strings[0] == "cauchy");
+    if (!dispersive && diag)
+        diag->unsupported(p.loc, fmt::format("spectrally varying \"{}\" is rendered with its mean {:.4g} in RGB mode "
+                                             "(--spectral disperses it)",
+                                             p.name, mean));
     return mean;
 }
 

@@ -246,8 +246,11 @@ private:
         Param p;
         p.name = std::string(s.substr(b0, b1 - b0));
         p.loc = f.tok.location(decl);
+        // "blackbody" (pbrt-v4) and illum's dispersion formulas "sellmeier" (B1 B2 B3 C1 C2 C3, C in µm²)
+        // and "cauchy" (A B, B in µm²) are spectra given by parameters.
         bool blackbody = type_name == "blackbody";
-        if (blackbody) {
+        int formula_values = type_name == "sellmeier" ? 6 : type_name == "cauchy" ? 2 : 0;
+        if (blackbody || formula_values) {
             p.type = ParamType::Spectrum;
         } else if (auto t = param_type_from_string(type_name)) {
             p.type = *t;
@@ -303,7 +306,7 @@ private:
                                        to_string(t.kind), quoted(t)));
         }
 
-        const std::string tname = blackbody ? "blackbody" : to_string(p.type);
+        const std::string tname = blackbody || formula_values ? type_name : std::string(to_string(p.type));
         auto wrong_kind = [&](const std::optional<Token>& t, const char* expected, const char* found) {
             f.tok.fail(*t, fmt::format("parameter \"{}\" of type {} expects {}, found {} {}", p.name, tname,
                                        expected, found, quoted(*t)));
@@ -380,6 +383,12 @@ private:
                     f.tok.fail(decl, fmt::format("parameter \"{}\" of type blackbody needs 1 value, has {}",
                                                  p.name, nums.size()));
                 strs = {"blackbody"};
+            } else if (formula_values) {
+                if (first_str) wrong_kind(first_str, "numbers", "string");
+                if (int(nums.size()) != formula_values)
+                    f.tok.fail(decl, fmt::format("parameter \"{}\" of type {} needs {} values, has {}", p.name,
+                                                 type_name, formula_values, nums.size()));
+                strs = {type_name};
             } else if (first_str) {
                 if (first_num || strs.size() != 1)
                     f.tok.fail(decl,
