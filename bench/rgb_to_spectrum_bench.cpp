@@ -1,6 +1,7 @@
 // RGB -> sigmoid polynomial: ns per RGBColorSpace::to_polynomial (the table lookup: argmax, a binary search
 // of the z grid, trilinear interpolation of 8 entries), on random colours (mostly cache misses in the
-// 9.4 MB table) and on one texel's neighbourhood (cache hits); and per evaluation of the polynomial.
+// 9.4 MB table; half of them through the complement) and on one texel's neighbourhood (cache hits); and per
+// evaluation of the polynomial.
 #include <benchmark/benchmark.h>
 
 #include <vector>
