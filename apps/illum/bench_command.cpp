@@ -82,9 +82,10 @@ void run(const BenchArgs& args) {
         path_rays / 1e6, samples / 1e6, double(r.rays) / r.samples);
     fmt::print("  path tracer / raw Embree             : {:10.1f} %\n", 100 * ratio);
     if (args.spectral)
-        fmt::print("  spectral mode                        : {:10.2f} Msamples/s ({:.2f} rays/sample): {:.3f}x "
-                   "RGB mode's time per sample\n",
-                   spectral_samples / 1e6, spectral_rays_per_sample, samples / spectral_samples);
+        fmt::print(
+            "  spectral mode                        : {:10.2f} Msamples/s ({:.2f} rays/sample): {:.3f}x "
+            "RGB mode's time per sample\n",
+            spectral_samples / 1e6, spectral_rays_per_sample, samples / spectral_samples);
 }
 
 } // namespace

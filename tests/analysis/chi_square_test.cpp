@@ -2,10 +2,10 @@
 // correct sampler, and rejection of deliberately mis-weighted pdfs.
 #include <gtest/gtest.h>
 
-#include "illum/bsdf/albedo.h"
 #include "illum/analysis/audit.h"
 #include "illum/analysis/stats.h"
 #include "illum/analysis/weighted_histogram_test.h"
+#include "illum/bsdf/albedo.h"
 #include "illum/bsdf/coated.h"
 #include "illum/bsdf/lambert.h"
 #include "illum/bsdf/phong.h"

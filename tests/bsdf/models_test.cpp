@@ -119,8 +119,8 @@ TEST(CoatedDiffuse, WhiteBaseLosesOnlyTruncatedWalks) {
     Rgb64 mean, se;
     albedo_monte_carlo(coated, direction_deg(30, 0), 20000, 5, &mean, &se);
     EXPECT_NEAR(mean[0], 1, 4 * se[0] + 0.01);
-    CoatedDiffuseBxDF grey(DielectricInterface(1.5f, {0, 0}), LambertBxDF(SampledSpectrum(0.5f)), LayerMedium{}, 100,
-                           1);
+    CoatedDiffuseBxDF grey(DielectricInterface(1.5f, {0, 0}), LambertBxDF(SampledSpectrum(0.5f)),
+                           LayerMedium{}, 100, 1);
     albedo_monte_carlo(grey, direction_deg(30, 0), 20000, 5, &mean, &se);
     EXPECT_LT(mean[0], 0.6);
     EXPECT_GT(mean[0], 0.3);

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <vector>
 #include <fmt/format.h>
+#include <vector>
 
 #include "test_support.h"
 
@@ -48,7 +48,9 @@ V2 operator-(V2 a, V2 b) { return {a.x - b.x, a.z - b.z}; }
 V2 operator*(double s, V2 a) { return {s * a.x, s * a.z}; }
 double dot(V2 a, V2 b) { return a.x * b.x + a.z * b.z; }
 V2 unit(V2 a) { return (1 / std::sqrt(dot(a, a))) * a; }
-V2 rotate(V2 a, double t) { return {a.x * std::cos(t) - a.z * std::sin(t), a.x * std::sin(t) + a.z * std::cos(t)}; }
+V2 rotate(V2 a, double t) {
+    return {a.x * std::cos(t) - a.z * std::sin(t), a.x * std::sin(t) + a.z * std::cos(t)};
+}
 
 // Schott N-SF11 / SF11 Sellmeier coefficients: n² = 1 + Σ B_i λ² / (λ² - C_i), λ in µm.
 double sf11_index(double nm) {
@@ -78,8 +80,8 @@ double hit_line(V2 o, V2 d, V2 a, V2 b, V2* p) {
 }
 
 struct Prism {
-    V2 apex, b1, b2;       // face 1 = b1-apex (entry), face 2 = apex-b2 (exit)
-    V2 slit_c, slit_u;     // the slit's centre and its unit direction across
+    V2 apex, b1, b2;   // face 1 = b1-apex (entry), face 2 = apex-b2 (exit)
+    V2 slit_c, slit_u; // the slit's centre and its unit direction across
     double slit_width = 0.25;
 };
 
@@ -195,7 +197,8 @@ AttributeEnd
 )",
                        fmt::arg("hw", -kHalfWidth), fmt::arg("hw2", kHalfWidth),
                        fmt::arg("vh", kHalfWidth * kH / kW), fmt::arg("w", kW), fmt::arg("h", kH),
-                       fmt::arg("extra", world_extra), fmt::arg("prism", prism), fmt::arg("slit", slit), fmt::arg("depth", max_depth), fmt::arg("eta", eta));
+                       fmt::arg("extra", world_extra), fmt::arg("prism", prism), fmt::arg("slit", slit),
+                       fmt::arg("depth", max_depth), fmt::arg("eta", eta));
 }
 
 // The centroid column of the image's main spot. The slit is seen along more than one path through the
@@ -270,27 +273,31 @@ TEST(SpectralMode, SellmeierAndCauchyIndicesDisperse) {
     double total = 0;
     double named = centroid_column(test::render_pbrt(prism_scene(p, band, "", 2), s).image, &total);
     double sellmeier = centroid_column(
-        test::render_pbrt(prism_scene(p, band, "", 2,
-                                      R"("sellmeier eta" [1.73759695 0.313747346 1.89878101 0.013188707 0.0623068142 155.23629])"),
-                          s)
+        test::render_pbrt(
+            prism_scene(
+                p, band, "", 2,
+                R"("sellmeier eta" [1.73759695 0.313747346 1.89878101 0.013188707 0.0623068142 155.23629])"),
+            s)
             .image,
         &total);
     // n = A + B / λ² through SF11's n_F and n_C.
     double lf = 0.48613, lc = 0.65627, nf = sf11_index(486.13), nc = sf11_index(656.27);
     double b = (nf - nc) / (1 / (lf * lf) - 1 / (lc * lc)), a = nf - b / (lf * lf);
     double cauchy = centroid_column(
-        test::render_pbrt(prism_scene(p, band, "", 2, fmt::format(R"("cauchy eta" [{} {}])", a, b)), s).image, &total);
+        test::render_pbrt(prism_scene(p, band, "", 2, fmt::format(R"("cauchy eta" [{} {}])", a, b)), s).image,
+        &total);
     double cauchy_predicted = predicted_column(p, a + b / (0.45 * 0.45));
-    std::printf("450 nm band: glass-F11 %.2f, sellmeier %.2f (Snell's law %.2f); cauchy %.2f (Snell's law with its "
-                "index %.2f)\n",
-                named, sellmeier, predicted_column(p, sf11_index(450)), cauchy, cauchy_predicted);
+    std::printf(
+        "450 nm band: glass-F11 %.2f, sellmeier %.2f (Snell's law %.2f); cauchy %.2f (Snell's law with its "
+        "index %.2f)\n",
+        named, sellmeier, predicted_column(p, sf11_index(450)), cauchy, cauchy_predicted);
     EXPECT_NEAR(sellmeier, named, 0.3);
     EXPECT_NEAR(cauchy, cauchy_predicted, 1.0);
 }
 
 TEST(SpectralMode, DispersionFormulaErrorsNameTheirPosition) {
-    for (const char* bad : {R"("sellmeier eta" [1 2 3])", R"("cauchy eta" [1.5])", R"("cauchy eta" "glass-BK7")",
-                            R"("cauchy eta" [-5 0.01])"}) {
+    for (const char* bad : {R"("sellmeier eta" [1 2 3])", R"("cauchy eta" [1.5])",
+                            R"("cauchy eta" "glass-BK7")", R"("cauchy eta" [-5 0.01])"}) {
         std::string scene = fmt::format("WorldBegin\nMaterial \"dielectric\" {}\nShape \"sphere\"\n", bad);
         try {
             test::render_pbrt(scene);
@@ -329,7 +336,8 @@ TEST(SpectralMode, LosslessPrismConservesEnergy) {
                 sum2 += v * v;
             }
         double mean = sum / n, se = std::sqrt(std::max(0.0, sum2 / n - mean * mean) / (n - 1));
-        std::printf("channel %d over %zu pixels through the prism: %.5f ± %.5f (expected 1)\n", c, n, mean, se);
+        std::printf("channel %d over %zu pixels through the prism: %.5f ± %.5f (expected 1)\n", c, n, mean,
+                    se);
         EXPECT_NEAR(mean, 1, 0.005 + 4 * se) << "channel " << c;
     }
 }
@@ -341,8 +349,8 @@ namespace illum {
 namespace {
 
 // A film filled by an emitter seen head-on: every pixel is the emitter's radiance in the output space.
-std::string emitter_view(const std::string& color_space, const std::string& emission, const std::string& film_extra,
-                         const std::string& camera_extra = "") {
+std::string emitter_view(const std::string& color_space, const std::string& emission,
+                         const std::string& film_extra, const std::string& camera_extra = "") {
     return fmt::format(R"(
 ColorSpace "{}"
 Camera "orthographic" {}
@@ -393,15 +401,18 @@ TEST(SpectralMode, SensorWhiteBalanceIsoAndExposure) {
     s.max_depth = 1;
     const std::string a = R"("spectrum L" "stdillum-A")";
     Color3 plain = mean_of(test::render_pbrt(emitter_view("srgb", a, ""), s).image);
-    Color3 balanced = mean_of(test::render_pbrt(emitter_view("srgb", a, R"("float whitebalance" [2856])"), s).image);
-    std::printf("illuminant A: (%.4f %.4f %.4f); white-balanced for 2856 K: (%.4f %.4f %.4f)\n", plain.r, plain.g,
-                plain.b, balanced.r, balanced.g, balanced.b);
+    Color3 balanced =
+        mean_of(test::render_pbrt(emitter_view("srgb", a, R"("float whitebalance" [2856])"), s).image);
+    std::printf("illuminant A: (%.4f %.4f %.4f); white-balanced for 2856 K: (%.4f %.4f %.4f)\n", plain.r,
+                plain.g, plain.b, balanced.r, balanced.g, balanced.b);
     EXPECT_GT(plain.r / plain.b, 2);
     EXPECT_NEAR(balanced.r / balanced.g, 1, 0.01);
     EXPECT_NEAR(balanced.b / balanced.g, 1, 0.01);
     Color3 iso = mean_of(test::render_pbrt(emitter_view("srgb", a, R"("float iso" [200])"), s).image);
-    Color3 half = mean_of(
-        test::render_pbrt(emitter_view("srgb", a, "", R"("float shutteropen" [0] "float shutterclose" [0.5])"), s).image);
+    Color3 half =
+        mean_of(test::render_pbrt(
+                    emitter_view("srgb", a, "", R"("float shutteropen" [0] "float shutterclose" [0.5])"), s)
+                    .image);
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(iso[c], 2 * plain[c], 1e-4 * plain[c]) << c; // the same samples, scaled
         EXPECT_NEAR(half[c], 0.5f * plain[c], 1e-4 * plain[c]) << c;

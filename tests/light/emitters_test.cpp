@@ -66,8 +66,9 @@ TEST(SampleLe, DiffuseAreaLightOneAndTwoSided) {
         // Photons leave from the emitting side.
         PCG32 rng(7);
         for (int i = 0; i < 1000; ++i) {
-            auto s = light.sample_le({rng.uniform_float(), rng.uniform_float()},
-                                     {rng.uniform_float(), rng.uniform_float()}, SampledWavelengths::rgb_mode());
+            auto s =
+                light.sample_le({rng.uniform_float(), rng.uniform_float()},
+                                {rng.uniform_float(), rng.uniform_float()}, SampledWavelengths::rgb_mode());
             ASSERT_TRUE(s);
             if (!two) {
                 EXPECT_GT(dot(s->ray.d, s->n), 0);
@@ -119,7 +120,8 @@ TEST(SampleLe, DirectionalLight) {
     // Every photon starts outside the scene's sphere and travels along -w.
     PCG32 rng(5);
     for (int i = 0; i < 100; ++i) {
-        auto s = light.sample_le({rng.uniform_float(), rng.uniform_float()}, {0.5f, 0.5f}, SampledWavelengths::rgb_mode());
+        auto s = light.sample_le({rng.uniform_float(), rng.uniform_float()}, {0.5f, 0.5f},
+                                 SampledWavelengths::rgb_mode());
         ASSERT_TRUE(s);
         EXPECT_NEAR(dot(s->ray.d, -light.direction()), 1, 1e-5);
         EXPECT_GE(distance(s->ray.o, c), r * 0.999f);

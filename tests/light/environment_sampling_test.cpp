@@ -91,7 +91,8 @@ TEST(EnvSampling, ChiSquareAgainstPdf) {
         LightSampleContext ctx({0, 0, 0}, {}, {});
         int failed = 0, pdf_mismatches = 0;
         for (int i = 0; i < n; ++i) {
-            auto s = light.sample_li(ctx, {rng.uniform_float(), rng.uniform_float()}, SampledWavelengths::rgb_mode());
+            auto s = light.sample_li(ctx, {rng.uniform_float(), rng.uniform_float()},
+                                     SampledWavelengths::rgb_mode());
             if (!s) {
                 ++failed;
                 continue;
@@ -160,7 +161,8 @@ TEST(EnvSampling, OneBrightTexel) {
         int hits = 0;
         const int n = 100000;
         for (int i = 0; i < n; ++i) {
-            auto s = light.sample_li({}, {rng.uniform_float(), rng.uniform_float()}, SampledWavelengths::rgb_mode());
+            auto s = light.sample_li({}, {rng.uniform_float(), rng.uniform_float()},
+                                     SampledWavelengths::rgb_mode());
             ASSERT_TRUE(s);
             Point2f uv = env_uv(layout, s->wi);
             hits += int(uv.x * w) == bx && int(uv.y * h) == by;

@@ -115,7 +115,8 @@ TEST(ConductorRgb, FittedIndexReproducesSpectralReflectance) {
         EXPECT_LT(max_reflectance_error(m, *c, true), 0.01);
         EXPECT_LT(max_reflectance_error(m, *c), 0.05);
         // Normal incidence is matched exactly where it can be.
-        Color3 f0 = reflectance_rgb(m, 1.0), fit = conductor_f0(SampledSpectrum(c->eta), SampledSpectrum(c->k)).rgb();
+        Color3 f0 = reflectance_rgb(m, 1.0),
+               fit = conductor_f0(SampledSpectrum(c->eta), SampledSpectrum(c->k)).rgb();
         for (int ch = 0; ch < 3; ++ch)
             if (f0[ch] <= 1) {
                 EXPECT_NEAR(fit[ch], f0[ch], 1e-4);

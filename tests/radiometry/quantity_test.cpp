@@ -83,7 +83,8 @@ static_assert(!std::is_assignable_v<SolidAnglePdf&, AreaPdf>);
 static_assert(!Addable<AreaPdf, Area>);
 
 // The throughput is dimensionless: a BSDF value [sr^-1] times |cos θ| over a solid-angle pdf [sr^-1].
-static_assert(std::is_same_v<decltype(throughput_weight(Bsdf3(1.0f), 1.0f, SolidAnglePdf(1))), SampledSpectrum>);
+static_assert(
+    std::is_same_v<decltype(throughput_weight(Bsdf3(1.0f), 1.0f, SolidAnglePdf(1))), SampledSpectrum>);
 static_assert(std::is_same_v<Product<Bsdf3, Quotient<float, SolidAnglePdf>>, SampledSpectrum>);
 static_assert(std::is_same_v<Quotient<float, SolidAnglePdf>, SolidAngle>);
 // An area pdf in the throughput leaves units behind (m^2 sr^-1): not a weight a SampledSpectrum can take.

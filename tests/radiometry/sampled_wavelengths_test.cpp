@@ -46,7 +46,8 @@ TEST(SampledWavelengths, SamplesFollowTheirDensity) {
     for (int i = 0; i < kVisibleBins; ++i)
         for (float l = t.lambda[i]; l < t.lambda[i + 1]; l += 0.01f)
             expected[std::min(bins - 1, int((l - kVisibleMin) / 10))] += t.pdf[i] * 0.01 * n;
-    for (int b = 0; b < bins; ++b) EXPECT_NEAR(count[b], expected[b], 5 * std::sqrt(expected[b]) + 0.01 * expected[b] + 2) << b;
+    for (int b = 0; b < bins; ++b)
+        EXPECT_NEAR(count[b], expected[b], 5 * std::sqrt(expected[b]) + 0.01 * expected[b] + 2) << b;
 }
 
 TEST(SampledWavelengths, FourWavelengthsAtEqualOffsetsAndDispersionKeepsTheHero) {

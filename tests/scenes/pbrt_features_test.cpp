@@ -95,7 +95,8 @@ TEST(PbrtMaterials, ThinDielectricIsAnAliasOfTheRegistryModel) {
         build("Material \"thindielectric\" \"spectrum eta\" [400 1.6 700 1.4]\nShape \"sphere\"\n");
     ASSERT_EQ(sampled->warnings.size(), 1u);
     EXPECT_NE(sampled->warnings[0].find("rendered with its mean"), std::string::npos) << sampled->warnings[0];
-    auto textured = build(R"(Texture "e" "float" "checkerboard" "float uscale" 2 "float tex1" 1.2 "float tex2" 2.4
+    auto textured =
+        build(R"(Texture "e" "float" "checkerboard" "float uscale" 2 "float tex1" 1.2 "float tex2" 2.4
 Material "thindielectric" "texture eta" "e"
 Shape "sphere"
 )");

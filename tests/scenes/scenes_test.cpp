@@ -44,7 +44,8 @@ const SceneCase kCases[] = {
 
 void PrintTo(const SceneCase& c, std::ostream* os) { *os << c.name; }
 
-Image render_scene(const std::string& name, int spp, std::uint64_t seed, int resolution = 0, bool spectral = false) {
+Image render_scene(const std::string& name, int spp, std::uint64_t seed, int resolution = 0,
+                   bool spectral = false) {
     SceneDesc desc = parse_pbrt_file(test::shared_dir() + "/scenes/" + name + "/test.pbrt");
     if (resolution > 0) {
         desc.set_film_resolution(resolution, resolution);
@@ -163,9 +164,10 @@ TEST_P(SharedSceneSpectral, MatchesPbrtV4) {
         double m = 0.5 * (ma[ch] + mb[ch]);
         double diff = m / mr[ch] - 1, sigma = k.mean_sigma / mr[ch];
         double ref_var = k.mse_noise * c.spp / c.ref_spp;
-        std::printf("  channel %d: mean %.6f, pbrt-v4 %.6f, difference %+.2f%% (noise sigma %.2f%%); per-pixel "
-                    "MSE vs pbrt-v4 / noise = %.3f, d = %.3g +- %.3g (reference variance %.3g)\n",
-                    ch, m, mr[ch], 100 * diff, 100 * sigma, k.mse_ref / k.mse_noise, k.d_mean, k.d_se, ref_var);
+        std::printf(
+            "  channel %d: mean %.6f, pbrt-v4 %.6f, difference %+.2f%% (noise sigma %.2f%%); per-pixel "
+            "MSE vs pbrt-v4 / noise = %.3f, d = %.3g +- %.3g (reference variance %.3g)\n",
+            ch, m, mr[ch], 100 * diff, 100 * sigma, k.mse_ref / k.mse_noise, k.d_mean, k.d_se, ref_var);
         EXPECT_LT(std::abs(diff), 0.01 + 4.5 * sigma) << c.name << " channel " << ch;
         EXPECT_LT(k.d_mean, ref_var + 4.5 * k.d_se) << c.name << " channel " << ch;
     }

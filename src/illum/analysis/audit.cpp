@@ -6,9 +6,9 @@
 
 #include <fmt/core.h>
 
-#include "illum/bsdf/albedo.h"
 #include "illum/analysis/stats.h"
 #include "illum/analysis/weighted_histogram_test.h"
+#include "illum/bsdf/albedo.h"
 #include "illum/bsdf/common.h"
 #include "illum/bsdf/microfacet.h"
 #include "illum/bsdf/registry.h"

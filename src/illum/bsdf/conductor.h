@@ -14,7 +14,8 @@ inline constexpr Color3 kGoldK{3.983160f, 2.385721f, 1.603215f};
 
 class ConductorBxDF final : public BxDF {
 public:
-    ConductorBxDF(SampledSpectrum eta, SampledSpectrum k, FresnelMode mode = FresnelMode::Exact) : fresnel_{eta, k, mode} {
+    ConductorBxDF(SampledSpectrum eta, SampledSpectrum k, FresnelMode mode = FresnelMode::Exact)
+        : fresnel_{eta, k, mode} {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(all_positive(eta), "conductor", "eta must be > 0, got " + str(eta));
         ILLUM_REQUIRE(in_range(k, 0, 1e4f), "conductor", "k must be >= 0, got " + str(k));

@@ -42,8 +42,8 @@ public:
             DispersiveScalar ieta = eta_param("interface.eta", 1.5f);
             RoughnessParams coat = roughness("interface.");
             const ConductorMaterial* c = conductor("conductor.");
-            return own(std::make_unique<CoatedConductorMaterial>(std::move(ieta), coat, c, roughness("conductor."),
-                                                                 layer()));
+            return own(std::make_unique<CoatedConductorMaterial>(std::move(ieta), coat, c,
+                                                                 roughness("conductor."), layer()));
         }
         if (type == "diffusetransmission")
             return own(std::make_unique<DiffuseTransmissionMaterial>(
@@ -86,7 +86,8 @@ private:
         std::shared_ptr<const DenselySampledSpectrum> spectrum;
         if (p->type == ParamType::Spectrum) {
             eta = spectrum_param_mean(*p, &tex_.diagnostics());
-            spectrum = std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Unbounded));
+            spectrum =
+                std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Unbounded));
         } else if (p->type == ParamType::Texture) {
             p->used = true;
             tex_.diagnostics().unsupported(p->loc,
@@ -132,7 +133,8 @@ private:
             c.texture = tex_.constant(*named_spectrum_rgb(default_named));
             c.spectrum = std::make_shared<DenselySampledSpectrum>(named_dense(default_named));
         } else if (p && p->type == ParamType::Spectrum) {
-            c.spectrum = std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Unbounded));
+            c.spectrum =
+                std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Unbounded));
         }
         return c;
     }

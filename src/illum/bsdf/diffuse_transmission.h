@@ -12,7 +12,8 @@ namespace illum {
 
 class DiffuseTransmissionBxDF final : public BxDF {
 public:
-    DiffuseTransmissionBxDF(SampledSpectrum reflectance, SampledSpectrum transmittance) : r_(reflectance), t_(transmittance) {
+    DiffuseTransmissionBxDF(SampledSpectrum reflectance, SampledSpectrum transmittance)
+        : r_(reflectance), t_(transmittance) {
         using namespace bsdf_detail;
         ILLUM_REQUIRE(in_range(r_, 0, 1), "diffuse-transmission",
                       "reflectance must be in [0, 1], got " + str(r_));

@@ -14,8 +14,8 @@
 #include <cstdint>
 
 #include "illum/math/vector.h"
-#include "illum/radiometry/sampled_spectrum.h"
 #include "illum/radiometry/color.h"
+#include "illum/radiometry/sampled_spectrum.h"
 
 namespace illum {
 
@@ -84,7 +84,8 @@ inline SampledSpectrum fresnel_schlick(float cos_i, SampledSpectrum f0) {
 inline float dielectric_f0(float eta) { return sqr((eta - 1) / (eta + 1)); }
 inline SampledSpectrum conductor_f0(SampledSpectrum eta, SampledSpectrum k) {
     SampledSpectrum k2 = k * k;
-    return ((eta - SampledSpectrum(1)) * (eta - SampledSpectrum(1)) + k2) / ((eta + SampledSpectrum(1)) * (eta + SampledSpectrum(1)) + k2);
+    return ((eta - SampledSpectrum(1)) * (eta - SampledSpectrum(1)) + k2) /
+           ((eta + SampledSpectrum(1)) * (eta + SampledSpectrum(1)) + k2);
 }
 
 // Schlick for a dielectric seen from either side: from the denser side the angle in the lighter medium

@@ -133,8 +133,8 @@ public:
             if (!usable(wis)) continue;
             SampledSpectrum beta = wos->weight();
             SampledSpectrum exit_weight = wis->f / wis->pdf; // without the cosine, which the event gives
-            Vector3f exit_dir = -wis->wi;           // the inner direction of travel that leaves along wi
-            Vector3f w = wos->wi;                   // direction of travel, down into the layer
+            Vector3f exit_dir = -wis->wi; // the inner direction of travel that leaves along wi
+            Vector3f w = wos->wi;         // direction of travel, down into the layer
             float z = h;
             for (int depth = 0; depth < max_depth_; ++depth) {
                 if (depth > 3 && beta.max_component() < kRouletteWeight) {

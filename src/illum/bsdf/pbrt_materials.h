@@ -67,7 +67,8 @@ struct SpectralColor {
 // spectral mode r is uplifted as a reflectance first, as pbrt-v4 does).
 class ConductorMaterial final : public Material {
 public:
-    ConductorMaterial(SpectralColor eta, SpectralColor k, const ColorTexture* reflectance, RoughnessParams rough)
+    ConductorMaterial(SpectralColor eta, SpectralColor k, const ColorTexture* reflectance,
+                      RoughnessParams rough)
         : eta_(std::move(eta)), k_(std::move(k)), reflectance_(reflectance), rough_(rough) {}
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
         SampledSpectrum eta, k;
@@ -151,8 +152,8 @@ public:
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
         SampledSpectrum r = reflectance_->albedo(hit, lambda);
         return BSDF(arena.make<CoatedDiffuseBxDF>(DielectricInterface(eta_.at(lambda), coat_.alpha(hit)),
-                                                  LambertBxDF(r), layer_.medium(hit, lambda), layer_.max_depth,
-                                                  layer_.samples),
+                                                  LambertBxDF(r), layer_.medium(hit, lambda),
+                                                  layer_.max_depth, layer_.samples),
                     hit.shading_frame());
     }
     Color3 albedo(const SurfaceHit& hit) const override {
@@ -173,8 +174,8 @@ public:
     CoatedConductorMaterial(DispersiveScalar interface_eta, RoughnessParams interface,
                             const ConductorMaterial* conductor, RoughnessParams conductor_rough,
                             LayerParams layer)
-        : eta_(std::move(interface_eta)), interface_(interface), conductor_(conductor), rough_(conductor_rough),
-          layer_(layer) {}
+        : eta_(std::move(interface_eta)), interface_(interface), conductor_(conductor),
+          rough_(conductor_rough), layer_(layer) {}
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
         float ieta = eta_.at(lambda);
         SampledSpectrum eta, k;

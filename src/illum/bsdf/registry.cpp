@@ -273,7 +273,8 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<ThinDielectricBxDF>(p.dispersive_scalar("eta"_p), fresnel_mode(p));
+                     return m.template make<ThinDielectricBxDF>(p.dispersive_scalar("eta"_p),
+                                                                fresnel_mode(p));
                  })});
     m.push_back(
         {"conductor",
@@ -301,7 +302,8 @@ std::vector<ModelSpec> build_models() {
                  false,
                  "",
                  factory([](const auto& p, const auto& m) {
-                     return m.template make<PhongBxDF>(p.spectrum("kd"_p), p.spectrum("ks"_p), p.scalar("exponent"_p));
+                     return m.template make<PhongBxDF>(p.spectrum("kd"_p), p.spectrum("ks"_p),
+                                                       p.scalar("exponent"_p));
                  })});
     m.push_back({"blinn-phong",
                  "Blinn-Phong with Ashikhmin-Shirley normalisation",
@@ -353,8 +355,9 @@ std::vector<ModelSpec> build_models() {
          false,
          "",
          factory([](const auto& p, const auto& m) {
-             return m.template make<CookTorranceBxDF>(p.spectrum("kd"_p), p.spectrum("ks"_p), p.scalar("m"_p),
-                                                      Fresnel{p.spectrum("eta"_p), p.spectrum("k"_p), fresnel_mode(p)});
+             return m.template make<CookTorranceBxDF>(
+                 p.spectrum("kd"_p), p.spectrum("ks"_p), p.scalar("m"_p),
+                 Fresnel{p.spectrum("eta"_p), p.spectrum("k"_p), fresnel_mode(p)});
          })});
     {
         auto params = alpha_params(0.3);
@@ -376,7 +379,8 @@ std::vector<ModelSpec> build_models() {
                      "",
                      factory([](const auto& p, const auto& m) {
                          return m.template make<RoughConductorBxDF>(
-                             distribution(p), Fresnel{p.spectrum("eta"_p), p.spectrum("k"_p), fresnel_mode(p)});
+                             distribution(p),
+                             Fresnel{p.spectrum("eta"_p), p.spectrum("k"_p), fresnel_mode(p)});
                      })});
     }
     {
@@ -397,8 +401,8 @@ std::vector<ModelSpec> build_models() {
                      false,
                      "eta",
                      factory([](const auto& p, const auto& m) {
-                         return m.template make<RoughDielectricBxDF>(distribution(p), p.dispersive_scalar("eta"_p),
-                                                                     fresnel_mode(p));
+                         return m.template make<RoughDielectricBxDF>(
+                             distribution(p), p.dispersive_scalar("eta"_p), fresnel_mode(p));
                      })});
     }
     m.push_back({"ward",
@@ -521,8 +525,8 @@ std::vector<ModelSpec> build_models() {
          false,
          "",
          factory([](const auto& p, const auto& m) {
-             return m.template make<ToonBxDF>(p.spectrum("reflectance"_p), p.spectrum("ks"_p), p.integer("bands"_p),
-                                              p.scalar("highlight"_p));
+             return m.template make<ToonBxDF>(p.spectrum("reflectance"_p), p.spectrum("ks"_p),
+                                              p.integer("bands"_p), p.scalar("highlight"_p));
          })});
     // Closed-form albedos at normal incidence: ρ for Lambert, R for the mirror, R + T for the sheet.
     for (ModelSpec& spec : m) {
@@ -677,10 +681,12 @@ ModelArg model_arg(const ModelSpec& model, const ParamSpec& spec, const Param& p
         if (p.type == ParamType::Spectrum && spec.kind == ParamKind::Rgb) {
             Color3 c = spectrum_param_rgb(p, SpectrumKind::Unbounded);
             v = {c.r, c.g, c.b};
-            a.spectrum = std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(p, SpectrumKind::Unbounded));
+            a.spectrum =
+                std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(p, SpectrumKind::Unbounded));
         } else if (p.type == ParamType::Spectrum && spec.kind == ParamKind::Scalar) {
             v = {spectrum_param_mean(p, textures ? &textures->diagnostics() : nullptr)};
-            a.spectrum = std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(p, SpectrumKind::Unbounded));
+            a.spectrum =
+                std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(p, SpectrumKind::Unbounded));
         } else if (p.type == ParamType::Float || p.type == ParamType::Integer ||
                    (p.type == ParamType::RGB && spec.kind == ParamKind::Rgb)) {
             v = p.numbers;

@@ -93,7 +93,8 @@ struct ParamValues {
 class ModelArgs {
 public:
     // w: the path's wavelengths (null: RGB mode, as for the tools and audits).
-    ModelArgs(const std::vector<ModelArg>& args, const TextureEvalContext* at, SampledWavelengths* w = nullptr)
+    ModelArgs(const std::vector<ModelArg>& args, const TextureEvalContext* at,
+              SampledWavelengths* w = nullptr)
         : args_(args), at_(at), w_(w) {}
 
     bool has(ParamId id) const { return find(id) != nullptr; }

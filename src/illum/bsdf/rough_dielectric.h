@@ -41,7 +41,8 @@ public:
         // Microfacets seen from behind do not contribute.
         if (dot(wm, wi) * ci < 0 || dot(wm, wo) * co < 0) return {};
         float F = fresnel_(dot(wo, wm));
-        if (reflect) return Bsdf3(SampledSpectrum(distrib_.D(wm) * distrib_.G(wo, wi) * F / std::abs(4 * ci * co)));
+        if (reflect)
+            return Bsdf3(SampledSpectrum(distrib_.D(wm) * distrib_.G(wo, wi) * F / std::abs(4 * ci * co)));
         float denom = sqr(dot(wi, wm) + dot(wo, wm) / etap) * ci * co;
         float ft =
             distrib_.D(wm) * (1 - F) * distrib_.G(wo, wi) * std::abs(dot(wi, wm) * dot(wo, wm) / denom);

@@ -37,7 +37,8 @@ private:
 class SharedBxDFMaterial final : public Material {
 public:
     // albedo: what the albedo pass shows (e.g. the directional albedo at normal incidence).
-    SharedBxDFMaterial(std::unique_ptr<BxDF> bxdf, Color3 albedo, std::unique_ptr<Material> spectral = nullptr)
+    SharedBxDFMaterial(std::unique_ptr<BxDF> bxdf, Color3 albedo,
+                       std::unique_ptr<Material> spectral = nullptr)
         : bxdf_(std::move(bxdf)), albedo_(albedo), spectral_(std::move(spectral)) {}
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
         if (!lambda.spectral()) return BSDF(bxdf_.get(), hit.shading_frame());

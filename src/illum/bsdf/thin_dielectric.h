@@ -34,10 +34,12 @@ public:
         float R = reflectance(wo.z), T = 1 - R;
         if (uc < R || T <= 0) {
             Vector3f wi = reflect_z(wo);
-            return BSDFSample{wi, Bsdf3(SampledSpectrum(R / std::abs(wi.z))), SolidAnglePdf(R), kSpecularReflection};
+            return BSDFSample{wi, Bsdf3(SampledSpectrum(R / std::abs(wi.z))), SolidAnglePdf(R),
+                              kSpecularReflection};
         }
         Vector3f wi = -wo;
-        return BSDFSample{wi, Bsdf3(SampledSpectrum(T / std::abs(wi.z))), SolidAnglePdf(T), kSpecularTransmission};
+        return BSDFSample{wi, Bsdf3(SampledSpectrum(T / std::abs(wi.z))), SolidAnglePdf(T),
+                          kSpecularTransmission};
     }
 
 private:

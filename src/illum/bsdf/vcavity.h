@@ -12,8 +12,8 @@ namespace illum {
 
 // D: any callable giving the facet density at a unit half vector on the +z side.
 template <class Distribution>
-Bsdf3 vcavity_microfacet_f(Vector3f wo, Vector3f wi, SampledSpectrum kd, SampledSpectrum ks, const Fresnel& fresnel,
-                           const Distribution& D) {
+Bsdf3 vcavity_microfacet_f(Vector3f wo, Vector3f wi, SampledSpectrum kd, SampledSpectrum ks,
+                           const Fresnel& fresnel, const Distribution& D) {
     if (!same_hemisphere(wo, wi)) return {};
     float co = std::abs(wo.z), ci = std::abs(wi.z);
     Vector3f h = wo + wi;

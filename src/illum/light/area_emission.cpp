@@ -19,8 +19,9 @@ AreaEmission create_area_emission(const EntityDesc& a, Diagnostics& diag) {
         if (p->type == ParamType::RGB)
             l = Emission(*a.params.get_rgb("L"));
         else if (p->type == ParamType::Spectrum)
-            l = Emission(spectrum_param_rgb(*p, SpectrumKind::Illuminant),
-                         std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Illuminant)));
+            l = Emission(
+                spectrum_param_rgb(*p, SpectrumKind::Illuminant),
+                std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Illuminant)));
         else if (p->type == ParamType::Float)
             l = Emission(Color3(a.params.get_float("L", 1)));
         else

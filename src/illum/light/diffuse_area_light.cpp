@@ -45,7 +45,8 @@ SolidAnglePdf DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, Vector3f w
 }
 
 Power3 DiffuseAreaLight::power() const {
-    return lambertian_exitance(Radiance3(radiance_.rgb_value())) * Area(shape_->area()) * (two_sided_ ? 2.0f : 1.0f);
+    return lambertian_exitance(Radiance3(radiance_.rgb_value())) * Area(shape_->area()) *
+           (two_sided_ ? 2.0f : 1.0f);
 }
 
 std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2,

@@ -29,7 +29,8 @@ public:
     Power3 power() const override;
     // A point uniform by area, a cosine-weighted direction about its normal (either side with
     // probability 1/2 when two-sided): flux = L cos θ / (p_A · cos θ / π) = π L / p_A (× 2 two-sided).
-    std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2, const SampledWavelengths& lambda) const override;
+    std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
+                                           const SampledWavelengths& lambda) const override;
 
     Radiance3 emitted(Normal3f n, Vector3f w, const SampledWavelengths& lambda) const {
         if (!two_sided_ && dot(n, w) <= 0) return {};

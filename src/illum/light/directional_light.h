@@ -31,7 +31,8 @@ public:
     Power3 power() const override { return Irradiance3(e_.rgb_value()) * Area(kPi * radius_ * radius_); }
     // A point uniform on the disk of the scene's radius outside the scene, perpendicular to w; the
     // direction is the delta -w (pdf_dir = 1 as a probability): flux = E / p_pos = E π r².
-    std::optional<LightLeSample> sample_le(Point2f u1, Point2f, const SampledWavelengths& lambda) const override {
+    std::optional<LightLeSample> sample_le(Point2f u1, Point2f,
+                                           const SampledWavelengths& lambda) const override {
         if (!(radius_ > 0)) return std::nullopt;
         Frame f = Frame::from_z(w_);
         Point2f d = sample_uniform_disk_concentric(u1);

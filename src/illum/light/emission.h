@@ -44,12 +44,14 @@ struct Emission {
     Emission operator*(float s) const { return Emission(*this) *= s; }
 
 private:
-    static std::shared_ptr<const std::array<DenselySampledSpectrum, RGBColorSpace::kCount>> uplift_tables(Color3 c) {
+    static std::shared_ptr<const std::array<DenselySampledSpectrum, RGBColorSpace::kCount>>
+    uplift_tables(Color3 c) {
         auto t = std::make_shared<std::array<DenselySampledSpectrum, RGBColorSpace::kCount>>();
         for (int i = 0; i < RGBColorSpace::kCount; ++i) {
             const RGBColorSpace& cs = RGBColorSpace::by_index(i);
             UpliftedRgb u = uplift_unbounded_poly(c, cs);
-            (*t)[std::size_t(i)] = DenselySampledSpectrum::from([&](double l) { return u(l) * cs.illuminant(l); });
+            (*t)[std::size_t(i)] =
+                DenselySampledSpectrum::from([&](double l) { return u(l) * cs.illuminant(l); });
         }
         return t;
     }

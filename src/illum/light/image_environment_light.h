@@ -36,10 +36,13 @@ public:
     std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f u,
                                            const SampledWavelengths& lambda) const override;
     SolidAnglePdf pdf_li(const LightSampleContext& ctx, Vector3f wi, const SurfaceHit* hit) const override;
-    Radiance3 le(const Ray& ray, const SampledWavelengths& lambda) const override { return radiance(ray.d, lambda); }
+    Radiance3 le(const Ray& ray, const SampledWavelengths& lambda) const override {
+        return radiance(ray.d, lambda);
+    }
     // π r² ∫ L dω with r the scene's bounding radius (the flux through the scene's disk).
     Power3 power() const override;
-    std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2, const SampledWavelengths& lambda) const override;
+    std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
+                                           const SampledWavelengths& lambda) const override;
 
     // Radiance arriving from world direction w (towards the environment). Light::radiance (emission from
     // a surface point) stays visible beside it.

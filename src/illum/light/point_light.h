@@ -17,8 +17,14 @@ public:
         Vector3f d = position_ - ctx.p;
         float d2 = length_squared(d);
         if (d2 == 0) return std::nullopt;
-        return LightLiSample{
-            d / std::sqrt(d2), {}, biradiance(intensity(lambda), d2), SolidAnglePdf(1), position_, {}, {}, false};
+        return LightLiSample{d / std::sqrt(d2),
+                             {},
+                             biradiance(intensity(lambda), d2),
+                             SolidAnglePdf(1),
+                             position_,
+                             {},
+                             {},
+                             false};
     }
     SolidAnglePdf pdf_li(const LightSampleContext&, Vector3f, const SurfaceHit*) const override {
         return SolidAnglePdf(0);
@@ -26,10 +32,15 @@ public:
     // Φ = ∫ I dω = 4π I.
     Power3 power() const override { return Intensity3(intensity_.rgb_value()) * SolidAngle(4 * kPi); }
     // Uniform over the sphere of directions: flux = I / (1/4π) = 4π I for every photon.
-    std::optional<LightLeSample> sample_le(Point2f, Point2f u2, const SampledWavelengths& lambda) const override {
+    std::optional<LightLeSample> sample_le(Point2f, Point2f u2,
+                                           const SampledWavelengths& lambda) const override {
         SolidAnglePdf pdf_dir(uniform_sphere_pdf());
-        return LightLeSample{
-            Ray{position_, sample_uniform_sphere(u2)}, {}, {}, AreaPdf(1), pdf_dir, intensity(lambda) / pdf_dir};
+        return LightLeSample{Ray{position_, sample_uniform_sphere(u2)},
+                             {},
+                             {},
+                             AreaPdf(1),
+                             pdf_dir,
+                             intensity(lambda) / pdf_dir};
     }
     Point3f position() const { return position_; }
     Intensity3 intensity(const SampledWavelengths& lambda) const { return Intensity3(intensity_.at(lambda)); }

@@ -54,7 +54,8 @@ public:
                SolidAngle(2 * kPi * ((1 - cos_start_) + (cos_start_ - cos_end_) / 2));
     }
     // Uniform within the cone θ <= θ_end: flux = I(θ) / p_dir.
-    std::optional<LightLeSample> sample_le(Point2f, Point2f u2, const SampledWavelengths& lambda) const override {
+    std::optional<LightLeSample> sample_le(Point2f, Point2f u2,
+                                           const SampledWavelengths& lambda) const override {
         Vector3f w = frame_.to_world(sample_uniform_cone(u2, cos_end_));
         SolidAnglePdf pdf_dir(uniform_cone_pdf(cos_end_));
         Intensity3 i = intensity(w, lambda);

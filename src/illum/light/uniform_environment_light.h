@@ -9,7 +9,8 @@ namespace illum {
 
 class UniformEnvironmentLight final : public Light {
 public:
-    explicit UniformEnvironmentLight(Emission radiance) : Light(LightType::Infinite), radiance_(std::move(radiance)) {}
+    explicit UniformEnvironmentLight(Emission radiance)
+        : Light(LightType::Infinite), radiance_(std::move(radiance)) {}
 
     void preprocess(const Bounds3f& scene_bounds) override {
         scene_bounds.bounding_sphere(&scene_center_, &scene_radius_);
@@ -35,7 +36,8 @@ public:
 
     // A uniform direction, then a point on the disk of the scene's radius perpendicular to it, outside
     // the scene: flux = L / (p_pos p_dir) = 4π · π r² · L on average (exactly, for a constant map).
-    std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2, const SampledWavelengths& lambda) const override {
+    std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
+                                           const SampledWavelengths& lambda) const override {
         if (!(scene_radius_ > 0)) return std::nullopt;
         Vector3f wi = sample_uniform_sphere(u2); // towards the environment
         SolidAnglePdf pdf_dir(uniform_sphere_pdf());

@@ -135,12 +135,13 @@ float spectrum_param_mean(const Param& p, Diagnostics* diag) {
     float mean = spectrum_param_rgb(p, SpectrumKind::Unbounded).average();
     // A named glass or a dispersion formula asks for dispersion, which spectral mode renders; any other
     // spectrum given for a scalar is worth a word about RGB mode.
-    bool dispersive = p.strings.size() == 1 && (p.strings[0].rfind("glass-", 0) == 0 || p.strings[0] == "sellmeier" ||
-                                                p.strings[0] == "cauchy");
+    bool dispersive = p.strings.size() == 1 && (p.strings[0].rfind("glass-", 0) == 0 ||
+                                                p.strings[0] == "sellmeier" || p.strings[0] == "cauchy");
     if (!dispersive && diag)
-        diag->unsupported(p.loc, fmt::format("spectrally varying \"{}\" is rendered with its mean {:.4g} in RGB mode "
-                                             "(--spectral disperses it)",
-                                             p.name, mean));
+        diag->unsupported(
+            p.loc, fmt::format("spectrally varying \"{}\" is rendered with its mean {:.4g} in RGB mode "
+                               "(--spectral disperses it)",
+                               p.name, mean));
     return mean;
 }
 

@@ -46,7 +46,6 @@ struct RGBSigmoidPolynomial {
     float max_value() const;
 };
 
-
 class RGBColorSpace {
 public:
     // "srgb", "rec2020", "aces2065-1", "dci-p3" (pbrt-v4's names); nullptr for any other name.

@@ -11,8 +11,8 @@
 namespace illum {
 
 struct MeasuredIndex {
-    std::string_view element; // "Au", "CuZn", ...
-    PiecewiseLinearSpectrum eta, k;   // wavelength [nm] -> η, k; constant beyond the tabulated range
+    std::string_view element;       // "Au", "CuZn", ...
+    PiecewiseLinearSpectrum eta, k; // wavelength [nm] -> η, k; constant beyond the tabulated range
 };
 
 // Every measured index, in the order Ag, Al, Au, Cu, CuZn, MgO, TiO2. Built once, on first use.

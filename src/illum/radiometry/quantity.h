@@ -5,8 +5,8 @@
 // irradiance [W m^-2], a BRDF [sr^-1] x irradiance is radiance, and radiance + irradiance does not
 // compile. A tag separates quantities that share units but not meaning: biradiance (intensity / r^2,
 // before the cosine; McGuire's Graphics Codex) has the units of irradiance but is not one; a product
-// drops the tag. Everything is a thin wrapper over SampledSpectrum (RGB or four wavelengths, by the path's mode) or float:
-// zero cost at run time.
+// drops the tag. Everything is a thin wrapper over SampledSpectrum (RGB or four wavelengths, by the path's
+// mode) or float: zero cost at run time.
 #pragma once
 
 #include <cmath>
@@ -214,9 +214,7 @@ constexpr Irradiance3 irradiance(Radiance3 l, SolidAngle w, float cos_theta) {
     return Irradiance3(l.s * w.value * cos_theta);
 }
 // The exitance of a Lambertian emitter of radiance L: M = π L; its power over an area A: Φ = π A L.
-constexpr Irradiance3 lambertian_exitance(Radiance3 l) {
-    return Irradiance3(l.s * 3.14159265358979323846f);
-}
+constexpr Irradiance3 lambertian_exitance(Radiance3 l) { return Irradiance3(l.s * 3.14159265358979323846f); }
 
 // Estimators.
 
@@ -224,7 +222,9 @@ constexpr Irradiance3 lambertian_exitance(Radiance3 l) {
 // (dimensionless: [sr^-1] [sr^-1]^-1), the factor that one bounce adds to a path's throughput in the
 // Monte Carlo estimate of the rendering equation (PBR 4th ed. §13.1). Evaluated as
 // f · (|cos θ_i| / p).
-constexpr SampledSpectrum throughput_weight(Bsdf3 f, float abs_cos, SolidAnglePdf pdf) { return f * (abs_cos / pdf); }
+constexpr SampledSpectrum throughput_weight(Bsdf3 f, float abs_cos, SolidAnglePdf pdf) {
+    return f * (abs_cos / pdf);
+}
 
 // The power heuristic with β = 2 (Veach 1997, §9.2.4): w_a = p_a^2 / (p_a^2 + p_b^2), for one sample
 // from each of two strategies. The weights only sum to one when both densities are over the same measure

@@ -32,7 +32,9 @@ struct SampledSpectrum {
     constexpr SampledSpectrum operator op(SampledSpectrum o) const {                                         \
         return {c[0] op o.c[0], c[1] op o.c[1], c[2] op o.c[2], c[3] op o.c[3]};                             \
     }                                                                                                        \
-    constexpr SampledSpectrum operator op(float s) const { return {c[0] op s, c[1] op s, c[2] op s, c[3] op s}; } \
+    constexpr SampledSpectrum operator op(float s) const {                                                   \
+        return {c[0] op s, c[1] op s, c[2] op s, c[3] op s};                                                 \
+    }                                                                                                        \
     SampledSpectrum& operator op##=(SampledSpectrum o) { return *this = *this op o; }                        \
     SampledSpectrum& operator op##=(float s) { return *this = *this op s; }
     ILLUM_LANES(+)

@@ -9,7 +9,8 @@ VisibleWavelengthTable::VisibleWavelengthTable() {
         double l = 538 - 138.888889 * std::atanh(0.85691062 - 1.82750197 * u);
         lambda[i] = float(std::clamp(l, double(kVisibleMin), double(kVisibleMax)));
     }
-    for (int i = 0; i < kVisibleBins; ++i) pdf[i] = float(1.0 / (kVisibleBins * double(lambda[i + 1] - lambda[i])));
+    for (int i = 0; i < kVisibleBins; ++i)
+        pdf[i] = float(1.0 / (kVisibleBins * double(lambda[i + 1] - lambda[i])));
 }
 
 const VisibleWavelengthTable& visible_wavelength_table() {

@@ -21,7 +21,7 @@ struct UpliftedRgb {
     float scale = 1;
     double operator()(double lambda_nm) const { return scale * poly(float(lambda_nm)); }
 };
-UpliftedRgb uplift_albedo_poly(Color3 rgb, const RGBColorSpace& cs);   // rgb clamped to [0, 1]
+UpliftedRgb uplift_albedo_poly(Color3 rgb, const RGBColorSpace& cs);    // rgb clamped to [0, 1]
 UpliftedRgb uplift_unbounded_poly(Color3 rgb, const RGBColorSpace& cs); // rgb clamped to >= 0
 
 inline SampledSpectrum sample(const UpliftedRgb& u, const SampledWavelengths& w) {
@@ -51,10 +51,12 @@ enum class UpliftKind : std::uint8_t { Albedo, Unbounded };
 class UpliftCache {
 public:
     UpliftCache() = default;
-    UpliftCache(Color3 rgb, UpliftKind kind) : rgb_(kind == UpliftKind::Albedo ? clamp(rgb, 0.0f, 1.0f) : rgb) {
+    UpliftCache(Color3 rgb, UpliftKind kind)
+        : rgb_(kind == UpliftKind::Albedo ? clamp(rgb, 0.0f, 1.0f) : rgb) {
         for (int i = 0; i < RGBColorSpace::kCount; ++i) {
             const RGBColorSpace& cs = RGBColorSpace::by_index(i);
-            poly_[std::size_t(i)] = kind == UpliftKind::Albedo ? uplift_albedo_poly(rgb, cs) : uplift_unbounded_poly(rgb, cs);
+            poly_[std::size_t(i)] =
+                kind == UpliftKind::Albedo ? uplift_albedo_poly(rgb, cs) : uplift_unbounded_poly(rgb, cs);
         }
     }
     SampledSpectrum at(const SampledWavelengths& w) const {

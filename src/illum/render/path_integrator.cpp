@@ -6,8 +6,8 @@ namespace illum {
 
 Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
     Radiance3 l;
-    SampledSpectrum beta(1.0f);   // path throughput
-    float eta_scale = 1; // radiance scaling by refraction, undone for Russian roulette
+    SampledSpectrum beta(1.0f); // path throughput
+    float eta_scale = 1;        // radiance scaling by refraction, undone for Russian roulette
     bool specular_bounce = false;
     SolidAnglePdf prev_bsdf_pdf; // of the BSDF sample that made `ray`
     // A stochastic (layered) BSDF's sample carries no usable density: MIS weighs it with pdf() instead,

@@ -9,8 +9,8 @@
 #include <thread>
 
 #include "illum/camera/film.h"
-#include "illum/util/progress.h"
 #include "illum/util/error.h"
+#include "illum/util/progress.h"
 
 namespace illum {
 
@@ -32,7 +32,8 @@ std::vector<Tile> make_tiles(int w, int h, int size) {
 
 RenderResult render(const Scene& scene, const Integrator& integrator, const RenderOptions& options) {
     if (options.spp <= 0 && options.time_budget <= 0) throw Error("samples per pixel must be positive");
-    if (auto* whole = dynamic_cast<const WholeImageIntegrator*>(&integrator)) return whole->render_image(options);
+    if (auto* whole = dynamic_cast<const WholeImageIntegrator*>(&integrator))
+        return whole->render_image(options);
     const int w = scene.width, h = scene.height;
     int threads =
         options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));

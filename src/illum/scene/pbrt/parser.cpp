@@ -369,9 +369,10 @@ private:
                 (p.name == "filename" || p.name == "normalmap" || p.name == "lensfile" || p.name == "file" ||
                  p.name == "aperture"))
                 for (auto& str : strs) {
-                    bool builtin = (p.name == "file" && str.rfind("synthetic:", 0) == 0) ||
-                                   (p.name == "aperture" && (str == "circular" || str == "gaussian" ||
-                                                             str == "square" || str == "pentagon" || str == "star"));
+                    bool builtin =
+                        (p.name == "file" && str.rfind("synthetic:", 0) == 0) ||
+                        (p.name == "aperture" && (str == "circular" || str == "gaussian" || str == "square" ||
+                                                  str == "pentagon" || str == "star"));
                     if (!builtin) str = resolve_path(f.dir, str);
                 }
             break;
@@ -386,8 +387,8 @@ private:
             } else if (formula_values) {
                 if (first_str) wrong_kind(first_str, "numbers", "string");
                 if (int(nums.size()) != formula_values)
-                    f.tok.fail(decl, fmt::format("parameter \"{}\" of type {} needs {} values, has {}", p.name,
-                                                 type_name, formula_values, nums.size()));
+                    f.tok.fail(decl, fmt::format("parameter \"{}\" of type {} needs {} values, has {}",
+                                                 p.name, type_name, formula_values, nums.size()));
                 strs = {type_name};
             } else if (first_str) {
                 if (first_num || strs.size() != 1)
@@ -615,8 +616,9 @@ private:
         } else if (name == "ColorSpace") {
             sc_.color_space = read_string(f, d, "color space name");
             if (!RGBColorSpace::named(sc_.color_space))
-                throw Error(loc, fmt::format("unknown ColorSpace \"{}\" (use srgb, rec2020, aces2065-1 or dci-p3)",
-                                             sc_.color_space));
+                throw Error(loc,
+                            fmt::format("unknown ColorSpace \"{}\" (use srgb, rec2020, aces2065-1 or dci-p3)",
+                                        sc_.color_space));
             if (in_world_)
                 warn(loc, "ColorSpace after WorldBegin: one color space applies to the whole scene here");
         } else if (name == "Option") {
