@@ -38,7 +38,8 @@ Ray thin_lens(Point3f p_camera_dir_origin, Vector3f dir, float lens_radius, floa
 
 PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, int width, int height, float fov_deg,
                                      float lens_radius, float focal_distance, const Screen* screen)
-    : world_from_camera_(world_from_camera), lens_radius_(lens_radius), focal_distance_(focal_distance) {
+    : world_from_camera_(world_from_camera), camera_from_world_(world_from_camera.inverse()),
+      lens_radius_(lens_radius), focal_distance_(focal_distance), width_(width), height_(height) {
     Screen s = screen ? *screen : default_screen(width, height);
     float tan_half = std::tan(fov_deg * kPi / 360.0f);
     raster_to_screen(s, width, height, tan_half, &ax_, &bx_, &ay_, &by_);
@@ -52,7 +53,8 @@ std::optional<CameraRay> PerspectiveCamera::generate_ray(Point2f p, Point2f u_le
 
 OrthographicCamera::OrthographicCamera(const Transform& world_from_camera, int width, int height,
                                        float lens_radius, float focal_distance, const Screen* screen)
-    : world_from_camera_(world_from_camera), lens_radius_(lens_radius), focal_distance_(focal_distance) {
+    : world_from_camera_(world_from_camera), camera_from_world_(world_from_camera.inverse()),
+      lens_radius_(lens_radius), focal_distance_(focal_distance), width_(width), height_(height) {
     Screen s = screen ? *screen : PerspectiveCamera::default_screen(width, height);
     raster_to_screen(s, width, height, 1.0f, &ax_, &bx_, &ay_, &by_);
 }

@@ -5,6 +5,7 @@
 
 #include <optional>
 
+#include "illum/camera/camera_importance.h"
 #include "illum/geometry/ray.h"
 #include "illum/math/transform.h"
 
@@ -35,6 +36,19 @@ public:
     // True when generate_ray's direction depends on the wavelength (a dispersive lens): a spectral
     // integrator then keeps only the hero wavelength, whose path the ray is.
     virtual bool is_dispersive() const { return false; }
+
+    // Camera importance (camera_importance.h), for light tracing. Cameras without it (the realistic lens
+    // system) answer false and return nothing.
+    virtual bool has_importance() const { return false; }
+    // A lens point towards which the reference point p_ref sends light, from u; nullopt when the ray from
+    // it misses the film or the camera cannot see p_ref.
+    virtual std::optional<CameraWiSample> sample_wi(Point3f /*p_ref*/, Point2f /*u*/) const {
+        return std::nullopt;
+    }
+    // W_e along a ray leaving the lens (origin on the lens, unit direction), and the raster position it
+    // comes from; zero outside the film.
+    virtual Importance we(const Ray& /*ray*/, Point2f* /*p_raster*/ = nullptr) const { return Importance(0); }
+    virtual CameraRayPdf pdf_we(const Ray& /*ray*/) const { return {AreaPdf(0), SolidAnglePdf(0)}; }
 };
 
 // A perspective camera with an optional thin lens (lens_radius > 0 focuses at focal_distance).
@@ -48,11 +62,18 @@ public:
 
     static Screen default_screen(int width, int height);
 
+    // W_e = 1 / (A_film A_lens cos⁴θ) (camera_importance.cpp).
+    bool has_importance() const override { return true; }
+    std::optional<CameraWiSample> sample_wi(Point3f p_ref, Point2f u) const override;
+    Importance we(const Ray& ray, Point2f* p_raster = nullptr) const override;
+    CameraRayPdf pdf_we(const Ray& ray) const override;
+
 private:
-    Transform world_from_camera_;
+    Transform world_from_camera_, camera_from_world_;
     float lens_radius_, focal_distance_;
     // Raster (x, y) -> camera-space point on the z = 1 plane: (ax + bx x, ay + by y, 1).
     float ax_, bx_, ay_, by_;
+    int width_, height_;
 };
 
 // An orthographic camera: parallel rays along +z; the screen window is in camera-space units.
@@ -62,10 +83,18 @@ public:
                        float focal_distance = 1e6f, const Screen* screen = nullptr);
     std::optional<CameraRay> generate_ray(Point2f p_raster, Point2f u_lens, float lambda_nm) const override;
 
+    // Without a lens only: every ray is parallel to +z, so W_e = δ(ω - z) / A_film (A_film the screen
+    // window's area in camera space): sample_wi projects the reference point onto the film plane, with
+    // pdf 1 (a delta direction, as a point light's) and we = 1 / A_film. we() and pdf_we() of a given ray
+    // are 0 (a delta is never hit by chance).
+    bool has_importance() const override { return lens_radius_ == 0; }
+    std::optional<CameraWiSample> sample_wi(Point3f p_ref, Point2f u) const override;
+
 private:
-    Transform world_from_camera_;
+    Transform world_from_camera_, camera_from_world_;
     float lens_radius_, focal_distance_;
     float ax_, bx_, ay_, by_;
+    int width_, height_;
 };
 
 } // namespace illum

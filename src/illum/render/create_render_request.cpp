@@ -19,7 +19,7 @@ RenderRequest create_render_request(const EntityDesc& in, const EntityDesc& s, D
         r.integrator = "path"; // volpath: surfaces only; media are reported where they are declared
     } else if (t == "directlighting") {
         r.integrator = "direct"; // pbrt-v3's name for it
-    } else if (t == "bdpt" || t == "mlt" || t == "sppm" || t == "lightpath" || t == "randomwalk" ||
+    } else if (t == "bdpt" || t == "mlt" || t == "sppm" || t == "randomwalk" ||
                t == "simplevolpath" || t == "ambientocclusion" || t == "aov") {
         diag.unsupported(in.loc, fmt::format("integrator \"{}\" is rendered with \"path\"", t));
         r.integrator = "path";

@@ -3,6 +3,7 @@
 #include "illum/light/light.h"
 #include "illum/render/aov_integrator.h"
 #include "illum/render/direct_integrator.h"
+#include "illum/render/lightpath_integrator.h"
 #include "illum/render/path_integrator.h"
 #include "illum/util/error.h"
 
@@ -19,7 +20,7 @@ bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, Thre
 
 // Adding an integrator: its file, and one line here and in integrator_names().
 const std::vector<std::string>& integrator_names() {
-    static const std::vector<std::string> names = {"path", "direct", "albedo", "normal"};
+    static const std::vector<std::string> names = {"path", "direct", "albedo", "normal", "lightpath"};
     return names;
 }
 
@@ -28,7 +29,8 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene
     if (name == "direct") return std::make_unique<DirectIntegrator>(scene, max_depth);
     if (name == "albedo") return std::make_unique<AovIntegrator>(scene, AovIntegrator::Pass::Albedo);
     if (name == "normal") return std::make_unique<AovIntegrator>(scene, AovIntegrator::Pass::Normal);
-    throw Error("unknown integrator \"" + name + "\" (use path, direct, albedo or normal)");
+    if (name == "lightpath") return std::make_unique<LightPathIntegrator>(scene, max_depth);
+    throw Error("unknown integrator \"" + name + "\" (use path, direct, albedo, normal or lightpath)");
 }
 
 } // namespace illum

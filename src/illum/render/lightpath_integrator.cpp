@@ -1,0 +1,227 @@
+#include "illum/render/lightpath_integrator.h"
+
+#include <algorithm>
+#include <oneapi/tbb/enumerable_thread_specific.h>
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
+#include <oneapi/tbb/task_group.h>
+#include <thread>
+
+#include "illum/light/light.h"
+#include "illum/util/error.h"
+#include "illum/util/progress.h"
+
+namespace illum {
+
+namespace {
+
+// Veach 1997 §5.3 (eq. 5.19): with shading normals the BSDF is not symmetric, and the adjoint BSDF that
+// importance transport needs is f*(ωo → ωi) = f(ωi → ωo) |ωo·Ns| |ωi·Ng| / (|ωo·Ng| |ωi·Ns|). illum's
+// BSDFs leave this to the integrator. ωo: towards the particle's previous vertex; ωi: where it goes next.
+float shading_normal_adjoint(const SurfaceHit& hit, Vector3f wo, Vector3f wi) {
+    if (hit.ns == hit.n) return 1;
+    float num = std::abs(dot(wo, Vector3f(hit.ns))) * std::abs(dot(wi, Vector3f(hit.n)));
+    float den = std::abs(dot(wo, Vector3f(hit.n))) * std::abs(dot(wi, Vector3f(hit.ns)));
+    return den > 0 ? num / den : 0.0f;
+}
+
+} // namespace
+
+LightPathIntegrator::LightPathIntegrator(const Scene& scene, int max_depth)
+    : WholeImageIntegrator(scene), max_depth_(max_depth) {
+    if (!scene.camera || !scene.camera->has_importance())
+        throw Error(
+            "integrator \"lightpath\" needs a perspective camera or an orthographic one without a lens "
+            "(the realistic camera and a thin-lens orthographic one have no importance function)");
+}
+
+int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::vector<Splat>& out) const {
+    Sampler& sampler = tc.sampler;
+    const Camera& camera = *scene_.camera;
+    int dropped = 0;
+    auto splat = [&](Point2f p_raster, const Radiance3& l) {
+        if (!l.is_finite() || l.has_negative()) {
+            ++dropped;
+            return;
+        }
+        out.push_back({p_raster, scene_.sensor.to_rgb(l, tc.lambda)});
+    };
+
+    tc.lambda = spectral ? SampledWavelengths::sample_visible(sampler.get_1d(), scene_.color_space)
+                         : SampledWavelengths::rgb_mode();
+    float pmf = 0;
+    const Light* light = scene_.light_sampler.sample(sampler.get_1d(), &pmf);
+    if (!light || !(pmf > 0)) return dropped;
+    Point2f u_pos = sampler.get_2d(), u_dir = sampler.get_2d();
+    std::optional<LightLeSample> les = light->sample_le(u_pos, u_dir, tc.lambda);
+    if (!les || !(les->pdf_pos.value > 0) || !(les->pdf_dir.value > 0) || les->flux.is_black())
+        return dropped;
+
+    // The light's own point seen by the camera (s = 1, t = 1; Veach 1997 §10.2): the point y on the light
+    // came with area density p_A(y) = pdf_pos, the lens point with p_ω at y, so
+    //   L = L_e(y → lens) |cos θ_y| W_e / (p_light p_A(y) p_ω).
+    // (pbrt-v4 divides by the light's Pdf_Li from the lens instead of p_A(y).) Delta-position lights have
+    // no area to be seen.
+    Point2f u_cam = sampler.get_2d();
+    if (light->type() == LightType::Area) {
+        if (auto cs = camera.sample_wi(les->ray.o, u_cam)) {
+            SurfaceHit y;
+            y.p = les->ray.o;
+            y.n = les->n;
+            y.ns = les->n;
+            Radiance3 le = light->radiance(y, cs->wi, tc.lambda);
+            float cos_y = std::abs(dot(Vector3f(les->n), cs->wi));
+            if (!le.is_black() && cos_y > 0) {
+                // From the lens to the light: spawn_ray_to stops 1e-4 of the way short of the (offset)
+                // light point, so the emitter itself never blocks it.
+                Ray shadow = spawn_ray_to(cs->p_lens, Vector3f{0, 0, 0}, Normal3f{}, les->ray.o);
+                if (!occluded(shadow, tc))
+                    splat(cs->p_raster, le * (cos_y / pmf) * (cs->we / cs->pdf) / les->pdf_pos);
+            }
+        }
+    }
+
+    // The particle's throughput: its flux estimate over the light's selection probability, then
+    // f |cos θ| / p per bounce (importance transport, with the adjoint's shading-normal factor).
+    Power3 beta = les->flux / pmf;
+    const float beta0 = beta.max_component();
+    Ray ray = les->ray;
+    for (int depth = 0; max_depth_ < 0 || depth < max_depth_;) {
+        SurfaceHit hit;
+        if (!intersect(ray, &hit, tc)) break;
+        tc.arena.reset();
+        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.lambda, tc.arena) : BSDF();
+        if (!bsdf) {
+            ray = hit.spawn_ray(ray.d); // an interface without material: no vertex
+            continue;
+        }
+        if (bsdf.flags() == kNone) break;
+        Vector3f wo = hit.wo;
+
+        // Connect to the camera (t = 1): L = β f*(ωo → ωc) |cos θc| W_e / p_ω (PBR 4th ed. §16.3.2).
+        Point2f u_lens = sampler.get_2d();
+        if (bsdf.is_non_specular()) {
+            if (auto cs = camera.sample_wi(hit.p, u_lens)) {
+                Bsdf3 f = bsdf.f(wo, cs->wi, TransportMode::Importance);
+                float cos_c =
+                    std::abs(dot(cs->wi, Vector3f(hit.ns))) * shading_normal_adjoint(hit, wo, cs->wi);
+                if (!f.is_black() && cos_c > 0 && !occluded(hit.spawn_ray_to(cs->p_lens), tc))
+                    splat(cs->p_raster, beta * f * cos_c * (cs->we / cs->pdf));
+            }
+        }
+
+        // Scatter.
+        float u_lobe = sampler.get_1d();
+        Point2f u_bsdf = sampler.get_2d();
+        auto bs = bsdf.sample(wo, u_lobe, u_bsdf, TransportMode::Importance);
+        if (!bs) break;
+        float cos_i = std::abs(dot(bs->wi, Vector3f(hit.ns))) * shading_normal_adjoint(hit, wo, bs->wi);
+        beta *= throughput_weight(bs->f, cos_i, bs->pdf);
+        ray = hit.spawn_ray(bs->wi);
+        ++depth;
+        if (!beta.is_finite() || beta.is_black()) break;
+
+        // Russian roulette (not in pbrt-v4's lightpath; unbiased): after two bounces continue with
+        // probability min(1, max β / max β₀).
+        float u_rr = sampler.get_1d();
+        float rr = beta.max_component() / beta0;
+        if (rr < 1 && depth > 1) {
+            float q = std::max(0.0f, 1 - rr);
+            if (u_rr < q) break;
+            beta *= 1 / (1 - q);
+        }
+    }
+    return dropped;
+}
+
+RenderResult LightPathIntegrator::render_image(const RenderOptions& options) const {
+    const int w = scene_.width, h = scene_.height;
+    const std::size_t pixels = std::size_t(w) * h;
+    int threads =
+        options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    tbb::task_arena arena(threads);
+
+    auto kind = parse_sampler_kind(options.sampler);
+    if (!kind) throw Error("unknown sampler \"" + options.sampler + "\" (use sobol or independent)");
+    Sampler prototype(*kind, options.spp > 0 ? options.spp : 1, options.seed);
+    tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });
+    SplatFilm film(w, h, *scene_.filter);
+    const bool spectral = options.spectral;
+
+    const std::size_t chunks_per_pass = (pixels + kChunkPixels - 1) / kChunkPixels;
+    // Two sets of splat lists: while one wave is traced, the previous one's lists are added to the film
+    // (in chunk order, by one task), so the serial part overlaps the parallel one.
+    struct Wave {
+        std::vector<std::vector<Splat>> lists = std::vector<std::vector<Splat>>(kWaveChunks);
+        std::vector<int> dropped = std::vector<int>(kWaveChunks, 0);
+        std::size_t chunks = 0;
+    };
+    Wave waves[2];
+    std::uint64_t nonfinite = 0;
+    auto apply = [&](Wave& wv) {
+        for (std::size_t k = 0; k < wv.chunks; ++k) {
+            for (const Splat& sp : wv.lists[k]) film.add_splat(sp);
+            nonfinite += std::uint64_t(wv.dropped[k]);
+        }
+        wv.chunks = 0;
+    };
+    const bool timed = options.time_budget > 0;
+    Progress progress("render", timed ? 0 : pixels * std::uint64_t(options.spp), "samples", options.quiet);
+
+    // Chunks [g0, g1) of the sequence (sample index s, pixel chunk c), g = s · chunks_per_pass + c.
+    auto run = [&](std::size_t g0, std::size_t g1) {
+        int cur = 0;
+        for (std::size_t first = g0; first < g1; first += kWaveChunks, cur = 1 - cur) {
+            Wave& wv = waves[cur];
+            wv.chunks = std::min<std::size_t>(kWaveChunks, g1 - first);
+            arena.execute([&] {
+                tbb::task_group previous;
+                previous.run([&] { apply(waves[1 - cur]); });
+                tbb::parallel_for(std::size_t(0), wv.chunks, [&](std::size_t k) {
+                    ThreadContext& tc = contexts.local();
+                    std::size_t g = first + k;
+                    int s = int(g / chunks_per_pass);
+                    std::size_t p0 = (g % chunks_per_pass) * kChunkPixels,
+                                p1 = std::min(pixels, p0 + kChunkPixels);
+                    wv.lists[k].clear();
+                    wv.dropped[k] = 0;
+                    for (std::size_t p = p0; p < p1; ++p) {
+                        tc.sampler.start_pixel_sample({int(p % w), int(p / w)}, s);
+                        wv.dropped[k] += trace_particle(tc, spectral, wv.lists[k]);
+                    }
+                    tc.arena.reset();
+                    progress.add(p1 - p0);
+                });
+                previous.wait();
+            });
+        }
+        apply(waves[1 - cur]);
+    };
+
+    int spp = 0;
+    if (timed) {
+        do {
+            run(std::size_t(spp) * chunks_per_pass, std::size_t(spp + 1) * chunks_per_pass);
+            ++spp;
+            progress.set_fraction(progress.elapsed_seconds() / options.time_budget);
+        } while (progress.elapsed_seconds() < options.time_budget);
+    } else {
+        run(0, std::size_t(options.spp) * chunks_per_pass);
+        spp = options.spp;
+    }
+    progress.finish();
+
+    RenderResult r;
+    r.seconds = progress.elapsed_seconds();
+    r.image = film.resolve(spp);
+    r.spp = spp;
+    r.samples = pixels * std::uint64_t(spp);
+    for (auto& tc : contexts) r.rays += tc.rays;
+    r.nonfinite_samples = nonfinite;
+    r.threads = threads;
+    return r;
+}
+
+} // namespace illum
