@@ -4,6 +4,7 @@
 #include "illum/render/aov_integrator.h"
 #include "illum/render/direct_integrator.h"
 #include "illum/render/path_integrator.h"
+#include "illum/render/sppm_integrator.h"
 #include "illum/util/error.h"
 
 namespace illum {
@@ -19,7 +20,7 @@ bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, Thre
 
 // Adding an integrator: its file, and one line here and in integrator_names().
 const std::vector<std::string>& integrator_names() {
-    static const std::vector<std::string> names = {"path", "direct", "albedo", "normal"};
+    static const std::vector<std::string> names = {"path", "direct", "albedo", "normal", "sppm"};
     return names;
 }
 
@@ -28,7 +29,12 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene
     if (name == "direct") return std::make_unique<DirectIntegrator>(scene, max_depth);
     if (name == "albedo") return std::make_unique<AovIntegrator>(scene, AovIntegrator::Pass::Albedo);
     if (name == "normal") return std::make_unique<AovIntegrator>(scene, AovIntegrator::Pass::Normal);
-    throw Error("unknown integrator \"" + name + "\" (use path, direct, albedo or normal)");
+    if (name == "sppm") {
+        const RenderRequest& r = scene.request;
+        return std::make_unique<SPPMIntegrator>(
+            scene, SppmSettings{max_depth, r.sppm_photons_per_iteration, r.sppm_radius, std::uint64_t(r.sppm_seed)});
+    }
+    throw Error("unknown integrator \"" + name + "\" (use path, direct, albedo, normal or sppm)");
 }
 
 } // namespace illum
