@@ -87,7 +87,7 @@ public:
     std::size_t capacity_bytes() const { return blocks_.size() * kBlockBytes; }
 
 private:
-    static constexpr std::size_t kBlockBytes = 64 * 1024;
+    static constexpr std::size_t kBlockBytes = 16 * 1024;
     std::vector<std::unique_ptr<ScratchArena>> blocks_;
     std::size_t current_ = 0;
 };
@@ -503,7 +503,19 @@ RenderResult SPPMIntegrator::render_sppm(const RenderOptions& options, SppmStats
 }
 
 RenderResult SPPMIntegrator::render_image(const RenderOptions& options) const {
-    return render_sppm(options, nullptr);
+    SppmStats st;
+    RenderResult r = render_sppm(options, &st);
+    if (!options.quiet)
+        fmt::print(
+            stderr,
+            "sppm: {} iterations of {} photons, {:.3g} photons/s in the photon passes ({:.2f} s); radius "
+            "{:.3g}-{:.3g}; memory: grid {:.1f} MB, per-chunk gathers {:.1f} MB, pixels {:.1f} MB, BSDFs "
+            "{:.1f} MB\n",
+            st.iterations, photons_per_iteration(),
+            st.photon_seconds > 0 ? st.photons / st.photon_seconds : 0.0, st.photon_seconds,
+            st.final_radius_min, st.final_radius_max, st.grid_bytes / 1e6, st.chunk_bytes / 1e6,
+            st.pixel_bytes / 1e6, st.bsdf_bytes / 1e6);
+    return r;
 }
 
 } // namespace illum
