@@ -42,7 +42,6 @@ void VisiblePointGrid::build(const std::vector<Point3f>& p, const std::vector<fl
         ++n;
     }
     entries_.clear();
-    scratch_.clear();
     std::size_t buckets = 1;
     while (buckets < std::max<std::size_t>(n, 1) * 2) buckets *= 2;
     bucket_mask_ = buckets - 1;
@@ -62,31 +61,32 @@ void VisiblePointGrid::build(const std::vector<Point3f>& p, const std::vector<fl
     for (int a = 0; a < 3; ++a)
         res_[a] = std::clamp(int(std::ceil(d[a] * inv_cell_width_)), 1, kMaxResolution);
 
-    // Every (point, cell) pair, in point order.
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        if (!(r[i] > 0)) continue;
-        const float lo[3] = {p[i].x - r[i] - bounds_.lo.x, p[i].y - r[i] - bounds_.lo.y,
-                             p[i].z - r[i] - bounds_.lo.z};
-        int c0[3], c1[3];
-        for (int a = 0; a < 3; ++a) {
-            c0[a] = std::clamp(int(lo[a] * inv_cell_width_), 0, res_[a] - 1);
-            c1[a] = std::clamp(int((lo[a] + 2 * r[i]) * inv_cell_width_), 0, res_[a] - 1);
+    // Every (point, cell) pair, in point order: counted per bucket in a first pass, placed in a second
+    // (a counting sort without a copy of the pairs; stable: point order within a bucket).
+    auto for_each_pair = [&](auto&& f) {
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            if (!(r[i] > 0)) continue;
+            const float lo[3] = {p[i].x - r[i] - bounds_.lo.x, p[i].y - r[i] - bounds_.lo.y,
+                                 p[i].z - r[i] - bounds_.lo.z};
+            int c0[3], c1[3];
+            for (int a = 0; a < 3; ++a) {
+                c0[a] = std::clamp(int(lo[a] * inv_cell_width_), 0, res_[a] - 1);
+                c1[a] = std::clamp(int((lo[a] + 2 * r[i]) * inv_cell_width_), 0, res_[a] - 1);
+            }
+            for (int z = c0[2]; z <= c1[2]; ++z)
+                for (int y = c0[1]; y <= c1[1]; ++y)
+                    for (int x = c0[0]; x <= c1[0]; ++x)
+                        f(Entry{(std::uint64_t(z) * std::uint64_t(res_[1]) + std::uint64_t(y)) *
+                                        std::uint64_t(res_[0]) +
+                                    std::uint64_t(x),
+                                std::uint32_t(i)});
         }
-        for (int z = c0[2]; z <= c1[2]; ++z)
-            for (int y = c0[1]; y <= c1[1]; ++y)
-                for (int x = c0[0]; x <= c1[0]; ++x) {
-                    std::uint64_t cell = (std::uint64_t(z) * std::uint64_t(res_[1]) + std::uint64_t(y)) *
-                                             std::uint64_t(res_[0]) +
-                                         std::uint64_t(x);
-                    scratch_.push_back({cell, std::uint32_t(i)});
-                }
-    }
-    // Counting sort by bucket (stable: point order within a bucket).
-    for (const Entry& e : scratch_) ++offsets_[bucket(e.cell) + 1];
+    };
+    for_each_pair([&](const Entry& e) { ++offsets_[bucket(e.cell) + 1]; });
     for (std::size_t b = 0; b < buckets; ++b) offsets_[b + 1] += offsets_[b];
-    entries_.resize(scratch_.size());
+    entries_.resize(offsets_[buckets]);
     std::vector<std::uint32_t>& next = offsets_; // fill positions, restored below
-    for (const Entry& e : scratch_) entries_[next[bucket(e.cell)]++] = e;
+    for_each_pair([&](const Entry& e) { entries_[next[bucket(e.cell)]++] = e; });
     // next[b] now holds the end of bucket b, which is the start of b + 1: shift back by one bucket.
     for (std::size_t b = buckets; b > 0; --b) offsets_[b] = offsets_[b - 1];
     offsets_[0] = 0;

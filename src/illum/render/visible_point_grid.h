@@ -38,8 +38,7 @@ public:
     std::size_t bucket_count() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
     // Bytes held by the grid's arrays (capacity).
     std::size_t memory_bytes() const {
-        return offsets_.capacity() * sizeof(std::uint32_t) + entries_.capacity() * sizeof(Entry) +
-               scratch_.capacity() * sizeof(Entry);
+        return offsets_.capacity() * sizeof(std::uint32_t) + entries_.capacity() * sizeof(Entry);
     }
     float cell_width() const { return cell_width_; }
 
@@ -57,7 +56,7 @@ private:
     int res_[3] = {0, 0, 0};
     std::uint64_t bucket_mask_ = 0;
     std::vector<std::uint32_t> offsets_; // bucket b's entries are entries_[offsets_[b], offsets_[b + 1])
-    std::vector<Entry> entries_, scratch_;
+    std::vector<Entry> entries_;
 };
 
 } // namespace illum
