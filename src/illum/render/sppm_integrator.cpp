@@ -112,9 +112,11 @@ struct PhotonThread {
     explicit PhotonThread(const Sampler& s) : sampler(s) {}
 };
 
-class Renderer {
+// One render: the per-pixel state (visible points, R, N, τ, L_d), the per-chunk gathers and the grid, kept
+// across the iterations.
+class SppmRender {
 public:
-    Renderer(const Scene& scene, const SppmSettings& s, long long photons, const RenderOptions& o)
+    SppmRender(const Scene& scene, const SppmSettings& s, long long photons, const RenderOptions& o)
         : scene_(scene), settings_(s), options_(o), photons_(std::uint64_t(photons)),
           tracer_(scene, s.max_depth, hash(o.seed, s.seed)) {}
     RenderResult run(SppmStats* stats);
@@ -160,7 +162,7 @@ private:
     SppmStats stats_;
 };
 
-bool Renderer::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, std::uint64_t& rays) const {
+bool SppmRender::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, std::uint64_t& rays) const {
     ++rays;
     Ray shadow = ls.at_infinity
                      ? hit.spawn_ray(ls.wi)
@@ -172,8 +174,8 @@ bool Renderer::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, std::u
 
 // Next-event estimation at a camera vertex: one light picked by power, weighed against BSDF sampling by
 // the power heuristic (PBR 4th ed. §13.4; pbrt-v4's SPPMIntegrator::SampleLd).
-SampledSpectrum Renderer::sample_direct(const SurfaceHit& hit, const BSDF& bsdf,
-                                        const SampledWavelengths& lambda, CameraThread& t) const {
+SampledSpectrum SppmRender::sample_direct(const SurfaceHit& hit, const BSDF& bsdf,
+                                          const SampledWavelengths& lambda, CameraThread& t) const {
     float u_light = t.sampler.get_1d();
     Point2f u_li = t.sampler.get_2d();
     if (!bsdf.is_non_specular()) return {};
@@ -190,8 +192,8 @@ SampledSpectrum Renderer::sample_direct(const SurfaceHit& hit, const BSDF& bsdf,
     return l.s * (power_heuristic(pmf * ls->pdf, bsdf.pdf(hit.wo, ls->wi)) / pmf);
 }
 
-void Renderer::trace_camera_path(int x, int y, int iteration, const SampledWavelengths& pass_lambda,
-                                 CameraThread& t, TileBsdfStore& store) {
+void SppmRender::trace_camera_path(int x, int y, int iteration, const SampledWavelengths& pass_lambda,
+                                   CameraThread& t, TileBsdfStore& store) {
     const std::size_t pi = std::size_t(y) * std::size_t(w_) + std::size_t(x);
     VisiblePoint& vp = vp_[pi];
     vp = VisiblePoint{};
@@ -304,7 +306,7 @@ void Renderer::trace_camera_path(int x, int y, int iteration, const SampledWavel
     }
 }
 
-void Renderer::camera_pass(int iteration, const SampledWavelengths& pass_lambda) {
+void SppmRender::camera_pass(int iteration, const SampledWavelengths& pass_lambda) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles_.size(), 1), [&](const auto& range) {
         CameraThread& t = camera_threads_->local();
         for (std::size_t ti = range.begin(); ti != range.end(); ++ti) {
@@ -321,7 +323,7 @@ void Renderer::camera_pass(int iteration, const SampledWavelengths& pass_lambda)
     }
 }
 
-void Renderer::photon_pass(int iteration, const SampledWavelengths& pass_lambda) {
+void SppmRender::photon_pass(int iteration, const SampledWavelengths& pass_lambda) {
     std::fill(chunk_phi_.begin(), chunk_phi_.end(), Color3());
     std::fill(chunk_m_.begin(), chunk_m_.end(), 0u);
     const std::uint64_t first = std::uint64_t(iteration) * photons_;
@@ -356,7 +358,7 @@ void Renderer::photon_pass(int iteration, const SampledWavelengths& pass_lambda)
 }
 
 // Hachisuka & Jensen 2009, eqs. 7-8: N̂ = N + αM, R̂ = R √(N̂ / (N + M)), τ̂ = (τ + Φ) (R̂ / R)².
-void Renderer::update_pixels() {
+void SppmRender::update_pixels() {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixels_, 4096), [&](const auto& range) {
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
             Color3 phi;
@@ -376,7 +378,7 @@ void Renderer::update_pixels() {
 }
 
 // L = L_d / k + τ / (k N π R²).
-Image Renderer::image(int k) const {
+Image SppmRender::image(int k) const {
     Image img(w_, h_);
     const double photons = double(k) * double(photons_);
     for (std::size_t i = 0; i < pixels_; ++i) {
@@ -388,7 +390,7 @@ Image Renderer::image(int k) const {
     return img;
 }
 
-RenderResult Renderer::run(SppmStats* stats) {
+RenderResult SppmRender::run(SppmStats* stats) {
     const auto start = std::chrono::steady_clock::now();
     w_ = scene_.width;
     h_ = scene_.height;
@@ -498,7 +500,7 @@ RenderResult SPPMIntegrator::render_sppm(const RenderOptions& options, SppmStats
         throw Error("the number of iterations must be positive");
     if (settings_.max_depth < 0) throw Error("sppm needs a finite maxdepth");
     if (!(settings_.initial_radius > 0)) throw Error("sppm's radius must be positive");
-    Renderer r(scene_, settings_, photons_per_iteration(), options);
+    SppmRender r(scene_, settings_, photons_per_iteration(), options);
     return r.run(stats);
 }
 
