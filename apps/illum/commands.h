@@ -56,5 +56,6 @@ void add_brdf_command(CLI::App& app);
 void add_diff_command(CLI::App& app);
 void add_info_command(CLI::App& app);
 void add_envmap_command(CLI::App& app);
+void add_photons_command(CLI::App& app);
 
 } // namespace illum::cli

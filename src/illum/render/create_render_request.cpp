@@ -19,13 +19,21 @@ RenderRequest create_render_request(const EntityDesc& in, const EntityDesc& s, D
         r.integrator = "path"; // volpath: surfaces only; media are reported where they are declared
     } else if (t == "directlighting") {
         r.integrator = "direct"; // pbrt-v3's name for it
-    } else if (t == "bdpt" || t == "mlt" || t == "sppm" || t == "randomwalk" ||
+    } else if (t == "bdpt" || t == "mlt" || t == "randomwalk" ||
                t == "simplevolpath" || t == "ambientocclusion" || t == "aov") {
         diag.unsupported(in.loc, fmt::format("integrator \"{}\" is rendered with \"path\"", t));
         r.integrator = "path";
         for (const Param& p : in.params.params()) p.used = true; // its own parameters are not ours to judge
     } else {
         throw Error(in.loc, fmt::format("unknown integrator \"{}\"", t));
+    }
+    if (r.integrator == "sppm") {
+        r.sppm_photons_per_iteration = in.params.get_int("photonsperiteration", -1);
+        if (r.sppm_photons_per_iteration == 0 || r.sppm_photons_per_iteration < -1)
+            throw Error(in.loc, "photonsperiteration must be positive or -1 (the pixel count)");
+        r.sppm_radius = in.params.get_float("radius", 1);
+        if (!(r.sppm_radius > 0)) throw Error(in.loc, "radius must be positive");
+        r.sppm_seed = in.params.get_int("seed", 6502);
     }
     if (in.params.get_bool("regularize", false))
         diag.unsupported(in.params.find("regularize")->loc,

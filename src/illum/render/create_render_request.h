@@ -9,7 +9,8 @@
 namespace illum {
 
 // Integrator: pbrt-v4's "path", "volpath" (surfaces only until media land), "simplepath", illum's
-// "direct" (pbrt-v3's "directlighting"), "albedo", "normal", "lightpath"; "maxdepth" (5), "regularize" (false; true is
+// "direct" (pbrt-v3's "directlighting"), "albedo", "normal", "lightpath", "sppm" ("photonsperiteration"
+// (-1: the pixel count), "radius" (1), "seed" (6502)); "maxdepth" (5), "regularize" (false; true is
 // warned), "lightsampler" ("bvh" in pbrt-v4; illum samples lights by power, warned when another is named).
 // The other pbrt-v4 integrators render with "path", warned. Sampler: "pixelsamples" (16); zsobol, sobol
 // and paddedsobol are illum's Owen-scrambled Sobol, "independent" is independent, the others are replaced

@@ -5,6 +5,7 @@
 #include "illum/render/direct_integrator.h"
 #include "illum/render/lightpath_integrator.h"
 #include "illum/render/path_integrator.h"
+#include "illum/render/sppm_integrator.h"
 #include "illum/util/error.h"
 
 namespace illum {
@@ -20,7 +21,7 @@ bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, Thre
 
 // Adding an integrator: its file, and one line here and in integrator_names().
 const std::vector<std::string>& integrator_names() {
-    static const std::vector<std::string> names = {"path", "direct", "albedo", "normal", "lightpath"};
+    static const std::vector<std::string> names = {"path", "direct", "albedo", "normal", "lightpath", "sppm"};
     return names;
 }
 
@@ -30,7 +31,12 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene
     if (name == "albedo") return std::make_unique<AovIntegrator>(scene, AovIntegrator::Pass::Albedo);
     if (name == "normal") return std::make_unique<AovIntegrator>(scene, AovIntegrator::Pass::Normal);
     if (name == "lightpath") return std::make_unique<LightPathIntegrator>(scene, max_depth);
-    throw Error("unknown integrator \"" + name + "\" (use path, direct, albedo, normal or lightpath)");
+    if (name == "sppm") {
+        const RenderRequest& r = scene.request;
+        return std::make_unique<SPPMIntegrator>(
+            scene, SppmSettings{max_depth, r.sppm_photons_per_iteration, r.sppm_radius, std::uint64_t(r.sppm_seed)});
+    }
+    throw Error("unknown integrator \"" + name + "\" (use path, direct, albedo, normal, lightpath or sppm)");
 }
 
 } // namespace illum

@@ -24,6 +24,11 @@ struct RenderRequest {
     std::string sampler = "sobol";
     int spp = 16;
     std::string output; // the film's filename, "" when none
+    // Integrator "sppm" (pbrt-v4's parameters): photons per iteration (-1: the pixel count), the initial
+    // search radius [world units] and the photon streams' seed.
+    long long sppm_photons_per_iteration = -1;
+    float sppm_radius = 1;
+    int sppm_seed = 6502;
 };
 
 class Scene {
