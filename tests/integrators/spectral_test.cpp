@@ -391,6 +391,19 @@ TEST(SpectralMode, ColorSpacesRoundTripThroughTheFilm) {
     }
 }
 
+TEST(SpectralMode, UnknownColorSpaceAndSensorAreErrorsWithTheirPosition) {
+    for (const char* scene :
+         {"ColorSpace \"prophoto\"\nWorldBegin\n",
+          "Film \"rgb\" \"string sensor\" \"canon_eos_100d\"\nWorldBegin\nShape \"sphere\"\n"}) {
+        try {
+            test::render_pbrt(scene);
+            ADD_FAILURE() << scene << " was accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("<test>:1:"), std::string::npos) << e.what();
+        }
+    }
+}
+
 // pbrt-v4's sensor parameters: a CIE illuminant A emitter (luminance 1), white-balanced for 2856 K,
 // renders neutral (r = g = b within the noise; unbalanced it is orange, r/b > 2); "iso" 200 doubles the
 // image; an exposure of 0.5 s (shutterclose - shutteropen) halves it.
