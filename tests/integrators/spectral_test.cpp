@@ -391,6 +391,36 @@ TEST(SpectralMode, ColorSpacesRoundTripThroughTheFilm) {
     }
 }
 
+// Uplifted spectra of RGB values that sum to at most 1 may sum to more at some wavelengths; the models
+// whose parameters must sum to at most 1 are given spectra scaled back per wavelength, so a spectral render
+// of saturated complementary colours neither throws from a constructor nor gains energy (the furnace stays
+// below its emission bound).
+TEST(SpectralMode, UnitSumParametersStayValidAtEveryWavelength) {
+    for (const char* m : {R"("phong" "rgb kd" [0.9 0.05 0.05] "rgb ks" [0.1 0.95 0.95])",
+                          R"("ward" "rgb rho_d" [0.05 0.9 0.05] "rgb rho_s" [0.95 0.1 0.95])",
+                          R"("cook-torrance" "rgb kd" [0.05 0.05 0.9] "rgb ks" [0.95 0.95 0.1])"}) {
+        std::string scene = fmt::format(R"(
+Integrator "path" "integer maxdepth" [-1]
+LookAt 0.1 0.2 0  1 0.3 0.2  0 0 1
+Camera "perspective" "float fov" [60]
+Film "rgb" "integer xresolution" [8] "integer yresolution" [8]
+WorldBegin
+Material {}
+AreaLightSource "diffuse" "rgb L" [1 1 1]
+ReverseOrientation
+Shape "sphere" "float radius" [1]
+)",
+                                        m);
+        test::RenderSetup s;
+        s.spp = 64;
+        s.spectral = true;
+        RenderResult r;
+        ASSERT_NO_THROW(r = test::render_pbrt(scene, s)) << m;
+        EXPECT_EQ(r.nonfinite_samples, 0u) << m;
+        EXPECT_FALSE(r.image.has_non_finite()) << m;
+    }
+}
+
 TEST(SpectralMode, UnknownColorSpaceAndSensorAreErrorsWithTheirPosition) {
     for (const char* scene :
          {"ColorSpace \"prophoto\"\nWorldBegin\n",

@@ -120,6 +120,7 @@ private:
         return v ? *v : miss();
     }
     Color3 raw_rgb(const ModelArg& v) const; // evaluated and clamped to the parameter's range
+    SampledSpectrum raw_spectrum(const ModelArg& v) const;
     const ModelArg* find(ParamId id) const {
         for (const ModelArg& v : args_)
             if (v.id == id.hash) return &v;
@@ -161,12 +162,30 @@ inline Color3 ModelArgs::rgb(ParamId id) const {
     return c;
 }
 
+// Spectral mode: the parameter at the path's wavelengths, clamped to its range (an uplifted unbounded
+// value can reach 0 where the sigmoid saturates, below an index's lower bound).
+inline SampledSpectrum ModelArgs::raw_spectrum(const ModelArg& v) const {
+    SampledSpectrum s;
+    if (!v.color)
+        s = v.spectrum ? v.spectrum->sample(*w_) : v.uplifted.at(*w_);
+    else
+        s = v.hi <= 1 ? uplift_albedo(raw_rgb(v), *w_) : uplift_unbounded(raw_rgb(v), *w_);
+    return clamp(s, v.lo, v.hi);
+}
+
 inline SampledSpectrum ModelArgs::spectrum(ParamId id) const {
     if (!w_ || !w_->spectral()) return SampledSpectrum(rgb(id));
     const ModelArg& v = get(id);
-    if (!v.color) return v.spectrum ? clamp(v.spectrum->sample(*w_), v.lo, v.hi) : v.uplifted.at(*w_);
-    Color3 c = rgb(id);
-    return v.hi <= 1 ? uplift_albedo(c, *w_) : uplift_unbounded(c, *w_);
+    SampledSpectrum s = raw_spectrum(v);
+    if (v.unit_sum_group < 0) return s;
+    // Spectra uplifted from RGB values whose sum is at most 1 may sum to more at some wavelengths (constants
+    // too): each wavelength of the group is scaled to a hair below 1 as textured RGB values are.
+    SampledSpectrum sum;
+    for (const ModelArg& w : args_)
+        if (w.unit_sum_group == v.unit_sum_group) sum += raw_spectrum(w);
+    for (int i = 0; i < kSpectrumSamples; ++i)
+        if (sum[i] > 1) s[i] *= (1 - 1e-6f) / sum[i];
+    return s;
 }
 
 inline float ModelArgs::dispersive_scalar(ParamId id) const {
