@@ -14,8 +14,8 @@
 
 namespace illum {
 
-// The polynomial, scale and whether the colour space's illuminant multiplies it: one RGB value's
-// spectrum, computed once (a constant parameter) or per hit (a texture).
+// One RGB value's spectrum, scale · S(c0 λ² + c1 λ + c2): computed once (a constant parameter) or per hit (a
+// texture).
 struct UpliftedRgb {
     RGBSigmoidPolynomial poly;
     float scale = 1;
