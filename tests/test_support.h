@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <string>
 
 #include "illum/image/image.h"
@@ -42,6 +43,28 @@ inline RenderResult render_pbrt(const std::string& text, const RenderSetup& setu
     opt.quiet = true;
     opt.spectral = setup.spectral;
     return render(*scene, *integrator, opt);
+}
+
+// ../shared/scenes/NAME/test.pbrt rendered with its own sampler and its own integrator (or `integrator`),
+// the film resized to resolution² when resolution > 0; a non-finite sample or pixel fails the test.
+inline Image render_shared_scene(const std::string& name, int spp, std::uint64_t seed, int resolution = 0,
+                                 bool spectral = false, const std::string& integrator = "", int threads = 0) {
+    SceneDesc desc = parse_pbrt_file(shared_dir() + "/scenes/" + name + "/test.pbrt");
+    if (resolution > 0) desc.set_film_resolution(resolution, resolution);
+    auto scene = build_scene(desc);
+    auto in = make_integrator(integrator.empty() ? scene->request.integrator : integrator, *scene,
+                              scene->request.max_depth);
+    RenderOptions opt;
+    opt.spp = spp;
+    opt.seed = seed;
+    opt.sampler = scene->request.sampler;
+    opt.quiet = true;
+    opt.spectral = spectral;
+    opt.threads = threads;
+    RenderResult r = render(*scene, *in, opt);
+    EXPECT_EQ(r.nonfinite_samples, 0u) << name;
+    EXPECT_FALSE(r.image.has_non_finite()) << name;
+    return r.image;
 }
 
 // A disk emitter of radiance L and radius r at height h above the origin, facing down, with a black

@@ -151,21 +151,7 @@ AttributeEnd
 
 Image render_cornell(const std::string& integrator, int spp, std::uint64_t seed, int resolution,
                      bool spectral, int threads = 0) {
-    SceneDesc desc = parse_pbrt_file(test::shared_dir() + "/scenes/cornell-box/test.pbrt");
-    if (resolution > 0) desc.set_film_resolution(resolution, resolution);
-    auto scene = build_scene(desc);
-    auto in = make_integrator(integrator, *scene, scene->request.max_depth);
-    RenderOptions opt;
-    opt.spp = spp;
-    opt.seed = seed;
-    opt.sampler = scene->request.sampler;
-    opt.quiet = true;
-    opt.spectral = spectral;
-    opt.threads = threads;
-    RenderResult r = render(*scene, *in, opt);
-    EXPECT_EQ(r.nonfinite_samples, 0u);
-    EXPECT_FALSE(r.image.has_non_finite());
-    return r.image;
+    return test::render_shared_scene("cornell-box", spp, seed, resolution, spectral, integrator, threads);
 }
 
 class CornellLightPath : public testing::Test {

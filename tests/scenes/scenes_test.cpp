@@ -46,22 +46,7 @@ void PrintTo(const SceneCase& c, std::ostream* os) { *os << c.name; }
 
 Image render_scene(const std::string& name, int spp, std::uint64_t seed, int resolution = 0,
                    bool spectral = false) {
-    SceneDesc desc = parse_pbrt_file(test::shared_dir() + "/scenes/" + name + "/test.pbrt");
-    if (resolution > 0) {
-        desc.set_film_resolution(resolution, resolution);
-    }
-    auto scene = build_scene(desc);
-    auto integrator = make_integrator(scene->request.integrator, *scene, scene->request.max_depth);
-    RenderOptions opt;
-    opt.spp = spp;
-    opt.seed = seed;
-    opt.sampler = scene->request.sampler;
-    opt.quiet = true;
-    opt.spectral = spectral;
-    RenderResult r = render(*scene, *integrator, opt);
-    EXPECT_EQ(r.nonfinite_samples, 0u) << name;
-    EXPECT_FALSE(r.image.has_non_finite()) << name;
-    return r.image;
+    return test::render_shared_scene(name, spp, seed, resolution, spectral);
 }
 
 struct PixelCheck {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "illum/math/matrix3.h"
 #include "illum/radiometry/daylight.h"
 #include "illum/radiometry/spectra.h"
 
@@ -16,20 +17,11 @@ namespace illum {
 
 namespace {
 
-void invert3(const double m[9], double out[9]) {
-    double c00 = m[4] * m[8] - m[5] * m[7], c01 = m[5] * m[6] - m[3] * m[8], c02 = m[3] * m[7] - m[4] * m[6];
-    double det = m[0] * c00 + m[1] * c01 + m[2] * c02;
-    if (!(std::abs(det) > 0)) throw std::logic_error("singular colour space matrix");
-    double inv = 1 / det;
-    out[0] = c00 * inv;
-    out[1] = (m[2] * m[7] - m[1] * m[8]) * inv;
-    out[2] = (m[1] * m[5] - m[2] * m[4]) * inv;
-    out[3] = c01 * inv;
-    out[4] = (m[0] * m[8] - m[2] * m[6]) * inv;
-    out[5] = (m[2] * m[3] - m[0] * m[5]) * inv;
-    out[6] = c02 * inv;
-    out[7] = (m[1] * m[6] - m[0] * m[7]) * inv;
-    out[8] = (m[0] * m[4] - m[1] * m[3]) * inv;
+// The inverse of a colour space's matrix (never singular for real primaries).
+Matrix3d invert(const Matrix3d& m) {
+    std::optional<Matrix3d> inv = inverse(m);
+    if (!inv) throw std::logic_error("singular colour space matrix");
+    return *inv;
 }
 
 double d60(double lambda_nm) { return cie_daylight(lambda_nm, 6000); }
@@ -58,18 +50,21 @@ RGBColorSpace::RGBColorSpace(std::string_view name, Chromaticity r, Chromaticity
     white_[2] = integrate_spectrum([&](double l) { return this->illuminant(l) * cie_z(l); });
 
     const Chromaticity p[3] = {r, g, b};
-    double P[9], Pinv[9];
+    Matrix3d P;
     for (int c = 0; c < 3; ++c) {
         P[0 * 3 + c] = p[c].x / p[c].y;
         P[1 * 3 + c] = 1;
         P[2 * 3 + c] = (1 - p[c].x - p[c].y) / p[c].y;
     }
-    invert3(P, Pinv);
+    const Matrix3d Pinv = invert(P);
     for (int c = 0; c < 3; ++c) {
         double s = Pinv[c * 3 + 0] * white_[0] + Pinv[c * 3 + 1] * white_[1] + Pinv[c * 3 + 2] * white_[2];
         for (int row = 0; row < 3; ++row) xyz_from_rgb_[row * 3 + c] = P[row * 3 + c] * s;
     }
-    invert3(xyz_from_rgb_, rgb_from_xyz_);
+    Matrix3d xyz_from_rgb;
+    std::copy(xyz_from_rgb_, xyz_from_rgb_ + 9, xyz_from_rgb.begin());
+    const Matrix3d rgb_from_xyz = invert(xyz_from_rgb);
+    std::copy(rgb_from_xyz.begin(), rgb_from_xyz.end(), rgb_from_xyz_);
     for (int i = 0; i < 9; ++i) {
         rgb_from_xyz_f_[i] = float(rgb_from_xyz_[i]);
         xyz_from_rgb_f_[i] = float(xyz_from_rgb_[i]);
