@@ -85,9 +85,9 @@ private:
         float eta = def;
         std::shared_ptr<const DenselySampledSpectrum> spectrum;
         if (p->type == ParamType::Spectrum) {
-            eta = spectrum_param_mean(*p, &tex_.diagnostics());
-            spectrum =
-                std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Unbounded));
+            ScalarSpectrumParam s = spectrum_param_scalar(*p, &tex_.diagnostics());
+            eta = s.mean;
+            spectrum = std::move(s.spectrum);
         } else if (p->type == ParamType::Texture) {
             p->used = true;
             tex_.diagnostics().unsupported(p->loc,
@@ -127,14 +127,18 @@ private:
     // A colour parameter that may be a spectrum (η, k of a conductor), or pbrt-v4's default named one.
     SpectralColor spectral_color(const std::string& name, const char* default_named) {
         SpectralColor c;
-        c.texture = tex_.color(m_.params, name, std::nullopt);
         const Param* p = m_.params.find(name);
+        if (p && p->type == ParamType::Spectrum) {
+            // Read once for both modes: the RGB as a constant texture, the table for spectral mode.
+            SpectrumParam s = spectrum_param(*p, SpectrumKind::Unbounded);
+            c.texture = tex_.constant(s.rgb);
+            c.spectrum = std::move(s.spectrum);
+            return c;
+        }
+        c.texture = tex_.color(m_.params, name, std::nullopt);
         if (!c.texture) {
             c.texture = tex_.constant(*named_spectrum_rgb(default_named));
             c.spectrum = std::make_shared<DenselySampledSpectrum>(named_dense(default_named));
-        } else if (p && p->type == ParamType::Spectrum) {
-            c.spectrum =
-                std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Unbounded));
         }
         return c;
     }

@@ -679,14 +679,13 @@ ModelArg model_arg(const ModelSpec& model, const ParamSpec& spec, const Param& p
         }
         std::vector<double> v;
         if (p.type == ParamType::Spectrum && spec.kind == ParamKind::Rgb) {
-            Color3 c = spectrum_param_rgb(p, SpectrumKind::Unbounded);
-            v = {c.r, c.g, c.b};
-            a.spectrum =
-                std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(p, SpectrumKind::Unbounded));
+            SpectrumParam s = spectrum_param(p, SpectrumKind::Unbounded);
+            v = {s.rgb.r, s.rgb.g, s.rgb.b};
+            a.spectrum = std::move(s.spectrum);
         } else if (p.type == ParamType::Spectrum && spec.kind == ParamKind::Scalar) {
-            v = {spectrum_param_mean(p, textures ? &textures->diagnostics() : nullptr)};
-            a.spectrum =
-                std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(p, SpectrumKind::Unbounded));
+            ScalarSpectrumParam s = spectrum_param_scalar(p, textures ? &textures->diagnostics() : nullptr);
+            v = {s.mean};
+            a.spectrum = std::move(s.spectrum);
         } else if (p.type == ParamType::Float || p.type == ParamType::Integer ||
                    (p.type == ParamType::RGB && spec.kind == ParamKind::Rgb)) {
             v = p.numbers;

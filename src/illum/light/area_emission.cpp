@@ -18,11 +18,10 @@ AreaEmission create_area_emission(const EntityDesc& a, Diagnostics& diag) {
     if (const Param* p = a.params.find("L")) {
         if (p->type == ParamType::RGB)
             l = Emission(*a.params.get_rgb("L"));
-        else if (p->type == ParamType::Spectrum)
-            l = Emission(
-                spectrum_param_rgb(*p, SpectrumKind::Illuminant),
-                std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Illuminant)));
-        else if (p->type == ParamType::Float)
+        else if (p->type == ParamType::Spectrum) {
+            SpectrumParam s = spectrum_param(*p, SpectrumKind::Illuminant);
+            l = Emission(s.rgb, std::move(s.spectrum));
+        } else if (p->type == ParamType::Float)
             l = Emission(Color3(a.params.get_float("L", 1)));
         else
             a.params.fail(*p, fmt::format("parameter \"L\" cannot be of type {}", to_string(p->type)));

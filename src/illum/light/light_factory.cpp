@@ -43,9 +43,8 @@ Emission emission(const LightDesc& l, const std::string& name) {
     if (p->type != ParamType::Spectrum)
         l.params.fail(*p, fmt::format("parameter \"{}\" has type {}, expected rgb, spectrum or blackbody",
                                       name, to_string(p->type)));
-    return Emission(
-        spectrum_param_rgb(*p, SpectrumKind::Illuminant),
-        std::make_shared<DenselySampledSpectrum>(spectrum_param_dense(*p, SpectrumKind::Illuminant)));
+    SpectrumParam s = spectrum_param(*p, SpectrumKind::Illuminant);
+    return Emission(s.rgb, std::move(s.spectrum));
 }
 
 Vector3f unit_or_fail(const LightDesc& l, Vector3f v, const char* what) {

@@ -90,18 +90,13 @@ GivenSpectrum given_spectrum(const Param& p) {
 } // namespace
 
 namespace {
+
 // A spectrum outside the RGB gamut (a narrow band, say) has negative components; RGB mode renders its
 // nearest non-negative colour (the negative components set to 0), warned by nothing: a scene that needs the
 // colour exactly is rendered with --spectral.
 Color3 in_gamut(Color3 c) { return {std::max(c.r, 0.0f), std::max(c.g, 0.0f), std::max(c.b, 0.0f)}; }
-Color3 reduce(const Param& p, SpectrumKind kind);
-} // namespace
 
-Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind) { return in_gamut(reduce(p, kind)); }
-
-namespace {
-Color3 reduce(const Param& p, SpectrumKind kind) {
-    GivenSpectrum g = given_spectrum(p);
+Color3 reduce(const GivenSpectrum& g, const Param& p, SpectrumKind kind) {
     if (g.kelvin > 0) return blackbody_rgb(g.kelvin);
     if (!g.name.empty())
         if (auto c = named_spectrum_rgb(g.name)) {
@@ -113,26 +108,37 @@ Color3 reduce(const Param& p, SpectrumKind kind) {
     return kind == SpectrumKind::Illuminant ? illuminant_spectrum_to_rgb(g.table)
                                             : unbounded_spectrum_to_rgb(g.table);
 }
-} // namespace
 
-DenselySampledSpectrum spectrum_param_dense(const Param& p, SpectrumKind kind) {
-    GivenSpectrum g = given_spectrum(p);
-    DenselySampledSpectrum d =
+std::shared_ptr<const DenselySampledSpectrum> tabulate(const GivenSpectrum& g, const Param& p,
+                                                       SpectrumKind kind) {
+    auto d = std::make_shared<DenselySampledSpectrum>(
         g.kelvin > 0 ? DenselySampledSpectrum::from([&](double l) { return blackbody(l, g.kelvin); })
-                     : DenselySampledSpectrum::from([&](double l) { return g.table(l); });
+                     : DenselySampledSpectrum::from([&](double l) { return g.table(l); }));
     if (kind == SpectrumKind::Illuminant) {
         // pbrt-v4's "scale /= SpectrumToPhotometric(s)": luminance ∫ s ȳ dλ = 1 (the film's Y of it).
         double y = 0;
         for (int i = 0; i < DenselySampledSpectrum::kCount; ++i)
-            y += double(d.values()[std::size_t(i)]) * cie_y(DenselySampledSpectrum::kMin + i);
+            y += double(d->values()[std::size_t(i)]) * cie_y(DenselySampledSpectrum::kMin + i);
         if (!(y > 0)) throw Error(p.loc, fmt::format("spectrum \"{}\" has no luminance", p.name));
-        d.scale(float(1 / y));
+        d->scale(float(1 / y));
     }
     return d;
 }
 
-float spectrum_param_mean(const Param& p, Diagnostics* diag) {
-    float mean = spectrum_param_rgb(p, SpectrumKind::Unbounded).average();
+} // namespace
+
+Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind) {
+    return in_gamut(reduce(given_spectrum(p), p, kind));
+}
+
+SpectrumParam spectrum_param(const Param& p, SpectrumKind kind) {
+    GivenSpectrum g = given_spectrum(p);
+    return {in_gamut(reduce(g, p, kind)), tabulate(g, p, kind)};
+}
+
+ScalarSpectrumParam spectrum_param_scalar(const Param& p, Diagnostics* diag) {
+    SpectrumParam s = spectrum_param(p, SpectrumKind::Unbounded);
+    float mean = s.rgb.average();
     // A named glass or a dispersion formula asks for dispersion, which spectral mode renders; any other
     // spectrum given for a scalar is worth a word about RGB mode.
     bool dispersive = p.strings.size() == 1 && (p.strings[0].rfind("glass-", 0) == 0 ||
@@ -142,7 +148,7 @@ float spectrum_param_mean(const Param& p, Diagnostics* diag) {
             p.loc, fmt::format("spectrally varying \"{}\" is rendered with its mean {:.4g} in RGB mode "
                                "(--spectral disperses it)",
                                p.name, mean));
-    return mean;
+    return {mean, std::move(s.spectrum)};
 }
 
 } // namespace illum

@@ -2,6 +2,8 @@
 // file of (wavelength, value) pairs) reduced to RGB for RGB mode, or tabulated for spectral mode.
 #pragma once
 
+#include <memory>
+
 #include "illum/param/param_set.h"
 #include "illum/radiometry/color.h"
 #include "illum/radiometry/densely_sampled_spectrum.h"
@@ -19,13 +21,22 @@ enum class SpectrumKind {
 // parameter used; throws illum::Error at its position for a bad spectrum or an unreadable file.
 Color3 spectrum_param_rgb(const Param& p, SpectrumKind kind);
 
-// The same spectrum for spectral mode, tabulated at every nanometre: an illuminant normalised to
-// luminance 1 (∫ s ȳ dλ = 1, pbrt-v4's photometric normalisation), anything else as given.
-DenselySampledSpectrum spectrum_param_dense(const Param& p, SpectrumKind kind);
+// Both modes' forms of the spectrum from one reading of the parameter (a file is read once): the RGB above
+// and, for spectral mode, the spectrum tabulated at every nanometre: an illuminant normalised to luminance
+// 1 (∫ s ȳ dλ = 1, pbrt-v4's photometric normalisation), anything else as given.
+struct SpectrumParam {
+    Color3 rgb;
+    std::shared_ptr<const DenselySampledSpectrum> spectrum;
+};
+SpectrumParam spectrum_param(const Param& p, SpectrumKind kind);
 
-// A spectrum given for a scalar (an index of refraction "glass-BK7", say) in an RGB render: the mean of its
-// RGB reduction, which for pbrt-v4's named glasses is their index near 550 nm. Any other spectrum is
-// reported to `diag` (when given) as rendered with that mean.
-float spectrum_param_mean(const Param& p, Diagnostics* diag);
+// A spectrum given for a scalar (an index of refraction "glass-BK7", say): for RGB mode the mean of its RGB
+// reduction, which for pbrt-v4's named glasses is their index near 550 nm (any other spectrum but a
+// dispersion formula is reported to `diag`, when given, as rendered with that mean), and its table.
+struct ScalarSpectrumParam {
+    float mean = 0;
+    std::shared_ptr<const DenselySampledSpectrum> spectrum;
+};
+ScalarSpectrumParam spectrum_param_scalar(const Param& p, Diagnostics* diag);
 
 } // namespace illum

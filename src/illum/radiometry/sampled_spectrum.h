@@ -48,7 +48,6 @@ struct SampledSpectrum {
     constexpr bool is_black() const { return c[0] == 0 && c[1] == 0 && c[2] == 0 && c[3] == 0; }
     constexpr float max_component() const { return std::max(std::max(c[0], c[1]), std::max(c[2], c[3])); }
     constexpr float average() const { return (c[0] + c[1] + c[2] + c[3]) / kSpectrumSamples; }
-    constexpr float min_component() const { return std::min(std::min(c[0], c[1]), std::min(c[2], c[3])); }
     bool is_finite() const {
         return std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]) && std::isfinite(c[3]);
     }

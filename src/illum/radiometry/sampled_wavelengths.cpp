@@ -4,9 +4,8 @@ namespace illum {
 
 VisibleWavelengthTable::VisibleWavelengthTable() {
     for (int i = 0; i <= kVisibleBins; ++i) {
-        double u = double(i) / kVisibleBins;
-        // The analytic inverse CDF in double, clamped to the range it maps [0, 1] onto.
-        double l = 538 - 138.888889 * std::atanh(0.85691062 - 1.82750197 * u);
+        // The analytic inverse CDF, clamped to the range it maps [0, 1] onto.
+        double l = sample_visible_wavelength(double(i) / kVisibleBins);
         lambda[i] = float(std::clamp(l, double(kVisibleMin), double(kVisibleMax)));
     }
     for (int i = 0; i < kVisibleBins; ++i)

@@ -24,9 +24,9 @@ inline float visible_wavelength_pdf(float lambda) {
     float c = std::cosh(0.0072f * (lambda - 538));
     return 0.0039398042f / (c * c);
 }
-// Its inverse CDF.
-inline float sample_visible_wavelength(float u) {
-    return 538 - 138.888889f * std::atanh(0.85691062f - 1.82750197f * u);
+// Its inverse CDF (in double, for the table below).
+inline double sample_visible_wavelength(double u) {
+    return 538 - 138.888889 * std::atanh(0.85691062 - 1.82750197 * u);
 }
 
 // What the renderer samples: that inverse CDF at kVisibleBins + 1 nodes u = i / kVisibleBins, linear in
