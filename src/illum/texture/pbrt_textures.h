@@ -28,7 +28,7 @@ public:
         int w = image_->width(), h = image_->height();
         float x = st.x * w - 0.5f, y = (1 - st.y) * h - 0.5f;
         float fx = std::floor(x), fy = std::floor(y);
-        int x0 = int(fx), y0 = int(fy);
+        int x0 = floor_to_int(x), y0 = floor_to_int(y);
         float ax = x - fx, ay = y - fy;
         Color3 c = texel(x0, y0) * ((1 - ax) * (1 - ay)) + texel(x0 + 1, y0) * (ax * (1 - ay)) +
                    texel(x0, y0 + 1) * ((1 - ax) * ay) + texel(x0 + 1, y0 + 1) * (ax * ay);
@@ -74,7 +74,9 @@ private:
 class ImageFloatTexture final : public FloatTexture {
 public:
     ImageFloatTexture(ImageTextureData data, UVMapping m) : data_(std::move(data)), m_(m) {}
-    float evaluate(const TextureEvalContext& hit) const override { return data_.lookup(m_.map(hit)).average(); }
+    float evaluate(const TextureEvalContext& hit) const override {
+        return data_.lookup(m_.map(hit)).average();
+    }
 
 private:
     ImageTextureData data_;
@@ -88,7 +90,7 @@ public:
     Checkerboard2D(const Base* a, const Base* b, UVMapping m) : a_(a), b_(b), m_(m) {}
     Value evaluate(const TextureEvalContext& hit) const override {
         Point2f st = m_.map(hit);
-        long parity = long(std::floor(st.x)) + long(std::floor(st.y));
+        int parity = floor_to_int(st.x) ^ floor_to_int(st.y); // the sum's parity is the xor's
         return (parity & 1) == 0 ? a_->evaluate(hit) : b_->evaluate(hit);
     }
 

@@ -12,6 +12,14 @@
 
 namespace illum {
 
+// floor(v) as an int for a texture lookup. A coordinate beyond ±2^30, infinite or NaN (an extreme uv scale,
+// a degenerate hit) gives 0 instead of the undefined behaviour of converting it (floats that large are even
+// integers anyway, so a checkerboard's parity is unchanged).
+inline int floor_to_int(float v) {
+    float f = std::floor(v);
+    return std::abs(f) < 1073741824.0f ? int(f) : 0;
+}
+
 // What a texture may depend on at a surface point.
 struct TextureEvalContext {
     Point3f p;
@@ -64,7 +72,8 @@ public:
     CheckerboardColorTexture(const ColorTexture* a, const ColorTexture* b, float su, float sv)
         : a_(a), b_(b), su_(su), sv_(sv) {}
     Color3 evaluate(const TextureEvalContext& hit) const override {
-        int parity = int(std::floor(hit.uv.x * su_) + std::floor(hit.uv.y * sv_)) & 1;
+        // The parity of floor(su u) + floor(sv v), as the xor of the two parities (no overflow).
+        int parity = (floor_to_int(hit.uv.x * su_) ^ floor_to_int(hit.uv.y * sv_)) & 1;
         return parity == 0 ? a_->evaluate(hit) : b_->evaluate(hit);
     }
 
