@@ -68,7 +68,10 @@ struct RGBToSpectrumTable {
     }
 
     RGBSigmoidPolynomial lookup(Color3 rgb) const {
-        rgb = clamp(rgb, 0, 1);
+        // Clamped to [0, 1] with NaN to 0 (std::clamp passes NaN through, which the index conversions below
+        // must not see; an infinite emitter scaled by its own maximum gives inf / inf).
+        auto unit = [](float v) { return v > 0 ? (v < 1 ? v : 1.0f) : 0.0f; };
+        rgb = Color3(unit(rgb.r), unit(rgb.g), unit(rgb.b));
         if (rgb.r == rgb.g && rgb.g == rgb.b) return grey(rgb.r);
         // S(-x) = 1 - S(x), so -c has the spectrum 1 - s and, the illuminant being the white (1, 1, 1),
         // the colour 1 - rgb: the brighter half of the cube is looked up through its complement, and the
