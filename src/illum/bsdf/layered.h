@@ -30,7 +30,7 @@
 #include <limits>
 
 #include "illum/bsdf/common.h"
-#include "illum/bsdf/henyey_greenstein.h"
+#include "illum/medium/henyey_greenstein.h"
 #include "illum/bsdf/layer_interfaces.h"
 
 namespace illum {

@@ -222,7 +222,8 @@ void Accelerator::alpha_filter(const RTCFilterFunctionNArguments* args) {
 }
 
 std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
-                                    std::vector<const Light*> lights, const FloatTexture* alpha) {
+                                    std::vector<const Light*> lights, const FloatTexture* alpha,
+                                    const MediumInterface* medium_interface) {
     if (mesh->face_normals.size() != mesh->triangle_count()) mesh->finalize();
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -247,16 +248,19 @@ std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Ma
     r.kind = Kind::Mesh;
     r.mesh = std::move(mesh);
     r.material = material;
+    r.medium_interface = medium_interface;
     r.lights = std::move(lights);
     r.cutout = std::move(cutout);
     return attach(geom, std::move(r));
 }
 
 std::uint32_t Accelerator::add_shape(std::unique_ptr<AnalyticShape> shape, const Material* material,
-                                     const Light* light, bool native_sphere) {
+                                     const Light* light, bool native_sphere,
+                                     const MediumInterface* medium_interface) {
     (building_ ? building_->bounds : bounds_).extend(shape->bounds());
     Record r;
     r.material = material;
+    r.medium_interface = medium_interface;
     if (light) r.lights.push_back(light); // one primitive, so at most one area light
     RTCGeometry geom;
     auto* sphere = dynamic_cast<const SphereShape*>(shape.get());
@@ -305,7 +309,7 @@ bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
     const Record& inst = records_[rh.hit.instID[0]];
     const Transform& w = inst.world_from_instance;
     Transform instance_from_world = w.inverse();
-    Ray local{instance_from_world(ray.o), instance_from_world(ray.d), ray.tmax};
+    Ray local{instance_from_world(ray.o), instance_from_world(ray.d), ray.tmax, ray.medium};
     fill_hit(prototypes_[inst.prototype]->records[rh.hit.geomID], rh, local, hit);
     // The point's error bound through the affine map (after PBR 4th ed. §6.8.6): each coordinate gets
     // |M| (γ3 |p| + (1 + γ3) err) + γ3 |translation|.
@@ -343,6 +347,8 @@ void Accelerator::fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ra
     hit->geom_id = rh.hit.geomID;
     hit->prim_id = rh.hit.primID;
     hit->material = rec.material;
+    hit->medium_interface = rec.medium_interface;
+    hit->medium = ray.medium;
     hit->area_light = rec.lights.empty() ? nullptr : rec.lights[rec.kind == Kind::Mesh ? rh.hit.primID : 0];
 }
 

@@ -28,14 +28,17 @@ public:
     // emit) or is empty when no primitive emits.
     // alpha (optional): a cut-out; where it is below 1 a hit is kept with probability alpha (pbrt-v4's
     // stochastic alpha test, deterministic per ray and surface crossing), so alpha 0 is a hole.
+    // medium_interface (optional): the media the surface separates, recorded on its hits.
     std::uint32_t add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
-                           std::vector<const Light*> lights, const FloatTexture* alpha = nullptr);
+                           std::vector<const Light*> lights, const FloatTexture* alpha = nullptr,
+                           const MediumInterface* medium_interface = nullptr);
     // A sphere, disk or cylinder (its cut-out, if any, is the shape's alpha()) as Embree user geometry.
     // native_sphere: a whole round sphere (SphereShape::is_round()) becomes an Embree sphere point
     // instead. Only bench/shape_bench.cpp asks for it: the user geometry measured faster
     // (docs/performance.md).
     std::uint32_t add_shape(std::unique_ptr<AnalyticShape> shape, const Material* material,
-                            const Light* light, bool native_sphere = false);
+                            const Light* light, bool native_sphere = false,
+                            const MediumInterface* medium_interface = nullptr);
     // Object instancing (pbrt's ObjectBegin/ObjectInstance): between begin_prototype() and end_prototype()
     // the add_* calls build a prototype (an Embree scene of its own, in instance space); add_instance()
     // places it in the world any number of times at the cost of one Embree instance each.
@@ -71,6 +74,7 @@ private:
         std::unique_ptr<TriangleMesh> mesh;
         std::unique_ptr<AnalyticShape> shape;
         const Material* material = nullptr;
+        const MediumInterface* medium_interface = nullptr;
         std::vector<const Light*> lights;
         std::unique_ptr<AlphaCutout> cutout; // owned here; Embree holds a pointer to it
         std::uint32_t prototype = 0;         // Kind::Instance

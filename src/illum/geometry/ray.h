@@ -18,10 +18,13 @@ constexpr float gamma_bound(int n) {
     return (n * eps) / (1 - n * eps);
 }
 
+class Medium;
+
 struct Ray {
     Point3f o;
     Vector3f d;
     float tmax = kInfinity;
+    const Medium* medium = nullptr; // the participating medium the ray travels in (none: vacuum)
 
     Point3f operator()(float t) const { return o + d * t; }
 };

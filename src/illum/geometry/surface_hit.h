@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "illum/geometry/medium_interface.h"
 #include "illum/geometry/ray.h"
 #include "illum/math/frame.h"
 #include "illum/texture/texture.h"
@@ -23,12 +24,30 @@ struct SurfaceHit : TextureEvalContext {
     const Material* material = nullptr;
     const Light* area_light = nullptr; // the emitter on this surface, if any
     std::uint32_t geom_id = 0, prim_id = 0;
+    // The media on either side: the surface's interface where it separates two media, else both sides are
+    // `medium`, the medium of the ray that found the hit.
+    const MediumInterface* medium_interface = nullptr;
+    const Medium* medium = nullptr;
 
     // The shading frame: +z is the shading normal, x follows dpdu.
     Frame shading_frame() const { return Frame::from_xz(dpdu, Vector3f(ns)); }
 
-    Ray spawn_ray(Vector3f d) const { return illum::spawn_ray(p, p_error, n, d); }
-    Ray spawn_ray_to(Point3f target) const { return illum::spawn_ray_to(p, p_error, n, target); }
+    // The medium a ray leaving the surface along w travels in.
+    const Medium* medium_for(Vector3f w) const {
+        if (!medium_interface) return medium;
+        return dot(w, n) > 0 ? medium_interface->outside : medium_interface->inside;
+    }
+
+    Ray spawn_ray(Vector3f d) const {
+        Ray r = illum::spawn_ray(p, p_error, n, d);
+        r.medium = medium_for(d);
+        return r;
+    }
+    Ray spawn_ray_to(Point3f target) const {
+        Ray r = illum::spawn_ray_to(p, p_error, n, target);
+        r.medium = medium_for(target - p);
+        return r;
+    }
 };
 
 } // namespace illum

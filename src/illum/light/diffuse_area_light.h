@@ -2,7 +2,7 @@
 #pragma once
 
 #include "illum/geometry/shape.h"
-#include "illum/light/emission.h"
+#include "illum/radiometry/emission.h"
 #include "illum/light/light.h"
 #include "illum/texture/texture.h"
 

@@ -3,7 +3,7 @@
 // bounding sphere: Φ = E π r².
 #pragma once
 
-#include "illum/light/emission.h"
+#include "illum/radiometry/emission.h"
 #include "illum/light/light.h"
 #include "illum/math/frame.h"
 #include "illum/math/warp.h"

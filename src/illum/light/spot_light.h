@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-#include "illum/light/emission.h"
+#include "illum/radiometry/emission.h"
 #include "illum/light/light.h"
 #include "illum/math/frame.h"
 #include "illum/math/warp.h"

@@ -1,7 +1,7 @@
 // A constant environment: radiance L arrives from every direction. Sampled uniformly over the sphere.
 #pragma once
 
-#include "illum/light/emission.h"
+#include "illum/radiometry/emission.h"
 #include "illum/light/light.h"
 #include "illum/math/warp.h"
 

@@ -1,0 +1,32 @@
+// Participating media (Pharr, Jakob & Humphreys, PBR 4th ed., ch. 11): at each point an absorption and a
+// scattering coefficient σ_a, σ_s [m^-1], a phase function and an emitted radiance Le (the source term
+// σ_a Le), all at the path's wavelengths. A medium gives its majorant σ_maj ≥ σ_a + σ_s along a ray as
+// piecewise-constant segments, against which the integrators' delta and ratio tracking sample
+// (sample_majorant.h). Coordinates are world space; a medium keeps its own transform.
+#pragma once
+
+#include "illum/geometry/medium_interface.h"
+#include "illum/geometry/ray.h"
+#include "illum/medium/henyey_greenstein.h"
+#include "illum/medium/majorant_grid.h"
+#include "illum/radiometry/sampled_wavelengths.h"
+
+namespace illum {
+
+struct MediumProperties {
+    SampledSpectrum sigma_a, sigma_s;
+    HenyeyGreenstein phase;
+    SampledSpectrum le; // emitted radiance; the source term is σ_a Le
+};
+
+class Medium {
+public:
+    virtual ~Medium() = default;
+    virtual bool is_emissive() const = 0;
+    // The coefficients at world point p.
+    virtual MediumProperties sample_point(Point3f p, const SampledWavelengths& lambda) const = 0;
+    // The majorant segments of `ray` (world space, unit direction) over t in [0, tmax).
+    virtual MajorantIterator sample_ray(const Ray& ray, float tmax, const SampledWavelengths& lambda) const = 0;
+};
+
+} // namespace illum

@@ -1,0 +1,37 @@
+// A medium's coefficient (σ_a, σ_s) in both modes: RGB mode's value, and for spectral mode either the
+// spectrum the scene gave or the RGB uplifted as an unbounded spectrum (as pbrt-v4's
+// RGBUnboundedSpectrum), times a scale. Constant over the medium; grids multiply it by their density.
+#pragma once
+
+#include <memory>
+
+#include "illum/radiometry/densely_sampled_spectrum.h"
+#include "illum/radiometry/uplift.h"
+
+namespace illum {
+
+class MediumSpectrum {
+public:
+    MediumSpectrum() = default;
+    explicit MediumSpectrum(Color3 rgb) : rgb_(rgb), uplifted_(rgb, UpliftKind::Unbounded) {}
+    MediumSpectrum(Color3 rgb, std::shared_ptr<const DenselySampledSpectrum> s)
+        : rgb_(rgb), spectrum_(std::move(s)) {}
+
+    SampledSpectrum at(const SampledWavelengths& w) const {
+        if (!w.spectral()) return SampledSpectrum(rgb_ * scale_);
+        return (spectrum_ ? spectrum_->sample(w) : uplifted_.at(w)) * scale_;
+    }
+    Color3 rgb() const { return rgb_ * scale_; }
+    MediumSpectrum& operator*=(float s) {
+        scale_ *= s;
+        return *this;
+    }
+
+private:
+    Color3 rgb_{0.0f};
+    UpliftCache uplifted_;
+    std::shared_ptr<const DenselySampledSpectrum> spectrum_;
+    float scale_ = 1;
+};
+
+} // namespace illum

@@ -1,0 +1,52 @@
+// Delta tracking's free-flight sampling against a ray's majorant (PBR 4th ed., §14.1, "SampleT_maj"):
+// along each majorant segment, tentative collisions are drawn with density σ_maj[c] exp(-σ_maj[c] t) for
+// one channel c (the path's sampling channel); at each, `callback(p, mp, σ_maj, T_maj)` sees the medium's
+// properties, σ_maj and the majorant transmittance T_maj = exp(-σ_maj Δt) since the previous collision
+// (all channels), and returns whether to go on. The return value is T_maj from the last collision to
+// tmax, or 1 when the callback stopped the walk. `u` gives the first step; `rng` the others.
+#pragma once
+
+#include <cfloat>
+#include <cmath>
+
+#include "illum/math/rng.h"
+#include "illum/medium/medium.h"
+
+namespace illum {
+
+template <class Callback>
+SampledSpectrum sample_t_maj(Ray ray, float tmax, float u, PCG32& rng, const SampledWavelengths& lambda,
+                             int channel, Callback&& callback) {
+    // Work in a unit-length parameter so that σ_maj Δt is optical depth.
+    float len = length(ray.d);
+    tmax *= len;
+    ray.d = ray.d / len;
+    MajorantIterator it = ray.medium->sample_ray(ray, tmax, lambda);
+    SampledSpectrum t_maj(1.0f);
+    while (std::optional<MajorantSegment> seg = it.next()) {
+        const SampledSpectrum& sigma_maj = seg->sigma_maj;
+        float t1 = std::min(seg->t1, FLT_MAX);
+        if (sigma_maj[channel] == 0) {
+            // No collisions in this channel: the segment only attenuates the others.
+            t_maj *= exp(-sigma_maj * (t1 - seg->t0));
+            continue;
+        }
+        float t = seg->t0;
+        for (;;) {
+            float step = -std::log1p(-u) / sigma_maj[channel];
+            u = rng.uniform_float();
+            if (t + step >= t1) {
+                t_maj *= exp(-sigma_maj * (t1 - t));
+                break;
+            }
+            t += step;
+            t_maj *= exp(-sigma_maj * step);
+            Point3f p = ray(t);
+            if (!callback(p, ray.medium->sample_point(p, lambda), sigma_maj, t_maj)) return SampledSpectrum(1.0f);
+            t_maj = SampledSpectrum(1.0f);
+        }
+    }
+    return t_maj;
+}
+
+} // namespace illum
