@@ -70,7 +70,15 @@ void run(const InfoArgs& args) {
     fmt::print("lights      {} ({}); {} area-light primitives; {} lights in all\n", desc.lights.size(),
                counts(lights), scene->lights.size() - std::min(scene->lights.size(), desc.lights.size()),
                scene->lights.size());
-    if (!desc.media.empty()) fmt::print("media       {} (not rendered)\n", desc.media.size());
+    if (!scene->medium_reports.empty()) {
+        fmt::print("media       {}{}\n", scene->medium_reports.size(),
+                   scene->camera_medium ? fmt::format(" (the camera is in \"{}\")", desc.camera.medium) : "");
+        for (const Scene::MediumReport& m : scene->medium_reports) {
+            fmt::print("  medium \"{}\": {}, {:.1f} KiB\n", m.name, m.type, double(m.bytes) / 1024);
+            if (m.bounded_by.empty()) fmt::print("    bounded by no shape\n");
+            for (const std::string& b : m.bounded_by) fmt::print("    {}\n", b);
+        }
+    }
     fmt::print("warnings    {}\n", scene->warnings.size());
     for (const auto& w : scene->warnings) fmt::print("warning: {}\n", w);
 }

@@ -20,6 +20,9 @@ public:
     // The reflectance a denoiser or the albedo pass shows (hemispherical albedo at normal incidence for
     // simple models; an estimate otherwise).
     virtual Color3 albedo(const SurfaceHit& hit) const = 0;
+    // pbrt-v4's "interface": a boundary between media with no surface; light crosses it unchanged, and
+    // shadow rays pass through it.
+    virtual bool is_interface() const { return false; }
 };
 
 class DiffuseMaterial final : public Material {

@@ -16,6 +16,7 @@ public:
           emissive_(emissive) {}
 
     bool is_emissive() const override { return emissive_; }
+    bool is_homogeneous() const override { return true; }
     MediumProperties sample_point(Point3f, const SampledWavelengths& lambda) const override {
         return {sigma_a_.at(lambda), sigma_s_.at(lambda), HenyeyGreenstein{g_},
                 emissive_ ? le_.at(lambda) : SampledSpectrum()};

@@ -23,6 +23,9 @@ class Medium {
 public:
     virtual ~Medium() = default;
     virtual bool is_emissive() const = 0;
+    // Whether σ_a, σ_s are the same everywhere and the majorant is σ_t itself (transmittance is then
+    // exp(-σ_t d), which the integrators may evaluate instead of estimating it).
+    virtual bool is_homogeneous() const { return false; }
     // The coefficients at world point p.
     virtual MediumProperties sample_point(Point3f p, const SampledWavelengths& lambda) const = 0;
     // The majorant segments of `ray` (world space, unit direction) over t in [0, tmax).

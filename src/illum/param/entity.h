@@ -21,6 +21,7 @@ struct EntityDesc {
 struct CameraDesc : EntityDesc {
     Transform camera_from_world; // pbrt's CTM at the Camera directive
     std::string medium;          // the outside medium current at the Camera directive ("" for none)
+    SourceLocation medium_loc;   // the MediumInterface directive that named it
 };
 
 struct MaterialDesc : EntityDesc {
@@ -46,14 +47,16 @@ struct ShapeDesc : EntityDesc {
     MaterialRef material;
     int area_light = -1; // index into SceneDesc::area_lights, -1 when the shape does not emit
     std::string inside_medium, outside_medium;
+    SourceLocation medium_loc; // the MediumInterface directive that named them
 };
 
 struct LightDesc : EntityDesc {
     Transform world_from_light;
     std::string medium; // the outside medium current at the LightSource directive
+    SourceLocation medium_loc;
 };
 
-// MakeNamedMedium: recorded as given; the renderer may not support participating media.
+// MakeNamedMedium: the medium's parameters and the transform current at the directive (medium space).
 struct MediumDesc : EntityDesc {
     std::string name;
     Transform world_from_medium;

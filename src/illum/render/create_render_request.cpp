@@ -15,8 +15,8 @@ RenderRequest create_render_request(const EntityDesc& in, const EntityDesc& s, D
     const auto& ours = integrator_names();
     if (std::find(ours.begin(), ours.end(), t) != ours.end()) {
         r.integrator = t;
-    } else if (t == "simplepath" || t == "volpath") {
-        r.integrator = "path"; // volpath: surfaces only; media are reported where they are declared
+    } else if (t == "simplepath") {
+        r.integrator = "path";
     } else if (t == "directlighting") {
         r.integrator = "direct"; // pbrt-v3's name for it
     } else if (t == "bdpt" || t == "mlt" || t == "randomwalk" ||

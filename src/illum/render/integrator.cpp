@@ -6,6 +6,7 @@
 #include "illum/render/lightpath_integrator.h"
 #include "illum/render/path_integrator.h"
 #include "illum/render/sppm_integrator.h"
+#include "illum/render/volpath_integrator.h"
 #include "illum/util/error.h"
 
 namespace illum {
@@ -21,12 +22,18 @@ bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, Thre
 
 // Adding an integrator: its file, and one line here and in integrator_names().
 const std::vector<std::string>& integrator_names() {
-    static const std::vector<std::string> names = {"path", "direct", "albedo", "normal", "lightpath", "sppm"};
+    static const std::vector<std::string> names = {"path",   "volpath",   "direct", "albedo",
+                                                     "normal", "lightpath", "sppm"};
     return names;
 }
 
 std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene& scene, int max_depth) {
     if (name == "path") return std::make_unique<PathIntegrator>(scene, max_depth);
+    if (name == "volpath") {
+        // Without media volpath's transport is the path tracer's, which is faster on surfaces alone.
+        if (!VolPathIntegrator::needed(scene)) return std::make_unique<PathIntegrator>(scene, max_depth);
+        return std::make_unique<VolPathIntegrator>(scene, max_depth);
+    }
     if (name == "direct") return std::make_unique<DirectIntegrator>(scene, max_depth);
     if (name == "albedo") return std::make_unique<AovIntegrator>(scene, AovIntegrator::Pass::Albedo);
     if (name == "normal") return std::make_unique<AovIntegrator>(scene, AovIntegrator::Pass::Normal);
@@ -36,7 +43,7 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene
         return std::make_unique<SPPMIntegrator>(
             scene, SppmSettings{max_depth, r.sppm_photons_per_iteration, r.sppm_radius, std::uint64_t(r.sppm_seed)});
     }
-    throw Error("unknown integrator \"" + name + "\" (use path, direct, albedo, normal, lightpath or sppm)");
+    throw Error("unknown integrator \"" + name + "\" (use path, volpath, direct, albedo, normal, lightpath or sppm)");
 }
 
 } // namespace illum

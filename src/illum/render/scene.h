@@ -2,6 +2,7 @@
 // SceneDesc. The render loop only reads it.
 #pragma once
 
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "illum/geometry/accelerator.h"
 #include "illum/light/light.h"
 #include "illum/light/light_sampler.h"
+#include "illum/medium/medium.h"
 #include "illum/texture/texture.h"
 
 namespace illum {
@@ -44,6 +46,8 @@ public:
     Sensor sensor;
     const RGBColorSpace* color_space = &RGBColorSpace::srgb();
     int width = 0, height = 0;
+    // The medium the camera sits in (pbrt-v4: the outside medium current at the Camera directive).
+    const Medium* camera_medium = nullptr;
     RenderRequest request;
     std::vector<std::string> warnings;
 
@@ -52,6 +56,17 @@ public:
     std::vector<std::unique_ptr<ColorTexture>> color_textures;
     std::vector<std::unique_ptr<FloatTexture>> float_textures;
     std::vector<std::unique_ptr<AreaShape>> light_shapes;
+    std::vector<std::unique_ptr<Medium>> media;
+    std::deque<MediumInterface> medium_interfaces; // stable addresses: hits point at them
+
+    // What `illum info` reports of each medium: its name, type, the memory its data takes and the shapes
+    // whose MediumInterface names it (by their source positions).
+    struct MediumReport {
+        std::string name, type;
+        std::size_t bytes = 0;
+        std::vector<std::string> bounded_by;
+    };
+    std::vector<MediumReport> medium_reports;
 
     bool intersect(const Ray& ray, SurfaceHit* hit) const { return accelerator.intersect(ray, hit); }
     bool occluded(const Ray& ray) const { return accelerator.occluded(ray); }

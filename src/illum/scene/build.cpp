@@ -5,6 +5,7 @@
 #include "illum/scene/build.h"
 
 #include <fmt/format.h>
+#include <map>
 #include <unordered_map>
 
 #include "illum/bsdf/create_material.h"
@@ -14,6 +15,7 @@
 #include "illum/light/area_emission.h"
 #include "illum/light/diffuse_area_light.h"
 #include "illum/light/light_factory.h"
+#include "illum/medium/create_medium.h"
 #include "illum/render/create_render_request.h"
 #include "illum/texture/texture_params.h"
 
@@ -37,6 +39,8 @@ public:
         scene_->sensor = create_sensor(desc_.film, desc_.camera, *scene_->color_space, diag_);
         scene_->request = create_render_request(desc_.integrator, desc_.sampler, diag_);
         scene_->request.output = film.filename;
+        build_media();
+        scene_->camera_medium = medium_named(desc_.camera.medium, desc_.camera.medium_loc);
         build_materials();
         for (const ShapeDesc& s : desc_.shapes) add_shape(s);
         for (const LightDesc& l : desc_.lights) add_light(l);
@@ -76,6 +80,45 @@ private:
         for (const auto& sh : desc_.shapes) check(sh, "shape");
         for (const auto& a : desc_.area_lights) check(a, "area light");
         for (const auto& l : desc_.lights) check(l, "light");
+        for (const auto& [name, m] : desc_.media) check(m, "medium");
+    }
+
+    // MakeNamedMedium: every medium, created once; shapes, the camera and lights refer to them by name.
+    void build_media() {
+        for (const auto& [name, m] : desc_.media) {
+            CreatedMedium c = create_medium(m, diag_);
+            media_[name] = {c.medium.get(), scene_->medium_reports.size()};
+            scene_->medium_reports.push_back({name, c.info.type, c.info.bytes, {}});
+            scene_->media.push_back(std::move(c.medium));
+        }
+        if (!desc_.media.empty() && scene_->request.integrator != "volpath")
+            diag_.unsupported(desc_.integrator.loc,
+                              fmt::format("integrator \"{}\" renders surfaces only: the scene's media are "
+                                          "ignored (use volpath)",
+                                          scene_->request.integrator));
+    }
+
+    // The medium of a MediumInterface name ("" is vacuum); an undefined name is an error at the directive.
+    const Medium* medium_named(const std::string& name, const SourceLocation& loc) {
+        if (name.empty()) return nullptr;
+        auto it = media_.find(name);
+        if (it == media_.end())
+            throw Error(loc, fmt::format("medium \"{}\" was never made (no MakeNamedMedium before this)", name));
+        return it->second.medium;
+    }
+
+    // A shape's MediumInterface when it separates two media (else none: the ray's medium carries on).
+    const MediumInterface* medium_interface_of(const ShapeDesc& s) {
+        const Medium* inside = medium_named(s.inside_medium, s.medium_loc);
+        const Medium* outside = medium_named(s.outside_medium, s.medium_loc);
+        if (inside == outside) return nullptr;
+        for (const std::string* n : {&s.inside_medium, &s.outside_medium})
+            if (!n->empty())
+                scene_->medium_reports[media_.at(*n).report].bounded_by.push_back(
+                    fmt::format("{} \"{}\" at {}", n == &s.inside_medium ? "inside" : "outside", s.type,
+                                s.loc.to_string()));
+        scene_->medium_interfaces.push_back({inside, outside});
+        return &scene_->medium_interfaces.back();
     }
 
     void build_materials() {
@@ -111,6 +154,7 @@ private:
         std::optional<AreaEmission> e;
         if (s.area_light >= 0) e = create_area_emission(desc_.area_lights.at(s.area_light), diag_);
         const Material* material = material_of(s.material, s.loc);
+        const MediumInterface* mi = medium_interface_of(s);
         if (g->mesh) {
             std::vector<const Light*> tri_lights;
             if (e) {
@@ -124,7 +168,7 @@ private:
                     scene_->lights.push_back(std::move(light));
                 }
             }
-            scene_->accelerator.add_mesh(std::move(g->mesh), material, std::move(tri_lights), g->alpha);
+            scene_->accelerator.add_mesh(std::move(g->mesh), material, std::move(tri_lights), g->alpha, mi);
             return;
         }
         const Light* light = nullptr;
@@ -135,7 +179,7 @@ private:
             light = l.get();
             scene_->lights.push_back(std::move(l));
         }
-        scene_->accelerator.add_shape(std::move(g->analytic), material, light);
+        scene_->accelerator.add_shape(std::move(g->analytic), material, light, false, mi);
     }
 
     void add_light(const LightDesc& l) {
@@ -179,6 +223,11 @@ private:
     std::vector<const Material*> materials_;
     std::unordered_map<std::string, const Material*> named_;
     const Material* default_material_ = nullptr;
+    struct NamedMedium {
+        const Medium* medium;
+        std::size_t report; // index into scene_->medium_reports
+    };
+    std::map<std::string, NamedMedium> media_;
 };
 
 } // namespace

@@ -78,6 +78,7 @@ struct GraphicsState {
     MaterialRef material;
     int area_light = -1;
     std::string inside_medium, outside_medium;
+    SourceLocation medium_loc;
     ParamSet shape_attrs, light_attrs, material_attrs, medium_attrs, texture_attrs;
 };
 
@@ -596,6 +597,7 @@ private:
             sc_.camera.loc = loc;
             sc_.camera.camera_from_world = gs_.ctm;
             sc_.camera.medium = gs_.outside_medium;
+            sc_.camera.medium_loc = gs_.medium_loc;
             named_coords_["camera"] = gs_.ctm.inverse();
         } else if (name == "Film" || name == "Sampler" || name == "PixelFilter" || name == "Integrator" ||
                    name == "Accelerator") {
@@ -650,18 +652,13 @@ private:
                 f.tok.fail(nt, fmt::format("medium \"{}\" redefined (first defined at {})", n,
                                            sc_.media[n].loc.to_string()));
             sc_.media[n] = std::move(m);
-            if (!warned_media_) {
-                warned_media_ = true;
-                warn(loc,
-                     "participating media are not supported: media are recorded but surfaces are rendered "
-                     "as if in vacuum");
-            }
         } else if (name == "MediumInterface") {
             std::string inside = read_string(f, d, "medium name");
             std::string outside = inside;
             if (f.tok.peek().kind == TokenKind::String) outside = f.tok.next().str;
             gs_.inside_medium = inside;
             gs_.outside_medium = outside;
+            gs_.medium_loc = loc;
         }
 
         // Materials and textures.
@@ -724,6 +721,7 @@ private:
             l.loc = loc;
             l.world_from_light = gs_.ctm;
             l.medium = gs_.outside_medium;
+            l.medium_loc = gs_.medium_loc;
             if (instance_)
                 f.tok.fail(d,
                            fmt::format("LightSource inside the definition of object \"{}\": lights cannot be "
@@ -750,6 +748,7 @@ private:
             s.area_light = gs_.area_light;
             s.inside_medium = gs_.inside_medium;
             s.outside_medium = gs_.outside_medium;
+            s.medium_loc = gs_.medium_loc;
             if (instance_) {
                 if (s.area_light >= 0) {
                     if (!warned_instanced_area_light_) {
@@ -853,7 +852,7 @@ private:
     InstanceDefinition* instance_ = nullptr;
     std::vector<std::pair<std::string, SourceLocation>> named_material_uses_;
     Active active_ = Active::All;
-    bool warned_motion_ = false, warned_transform_begin_ = false, warned_media_ = false,
+    bool warned_motion_ = false, warned_transform_begin_ = false, 
          warned_instanced_area_light_ = false;
 };
 

@@ -1,0 +1,312 @@
+#include "illum/render/volpath_integrator.h"
+
+#include <algorithm>
+
+#include "illum/bsdf/material.h"
+#include "illum/light/light.h"
+#include "illum/medium/medium.h"
+#include "illum/medium/sample_majorant.h"
+
+namespace illum {
+
+namespace {
+
+SampledSpectrum clamp_zero(SampledSpectrum v) { return clamp(v, 0.0f, kInfinity); }
+
+// A ray's majorant transmittance normalised by the sampling channel's (the density with which the walk
+// passed the segment without a collision).
+SampledSpectrum relative(SampledSpectrum t_maj, int channel) {
+    return t_maj[channel] > 0 ? t_maj / t_maj[channel] : SampledSpectrum(0.0f);
+}
+
+// Roulette for ratio tracking once the estimate is small (PBR 4th ed. §14.2.2): kept with probability 1/4.
+constexpr float kShadowRouletteBelow = 0.05f;
+constexpr float kShadowKeep = 0.25f;
+// Surfaces without material a shadow ray or a path may cross before it is given up (a scene of nested
+// interfaces would need far fewer; this only guards against a degenerate one).
+constexpr int kMaxCrossings = 256;
+
+} // namespace
+
+bool VolPathIntegrator::needed(const Scene& scene) { return !scene.media.empty(); }
+
+SampledSpectrum VolPathIntegrator::transmittance(Ray ray, const LightLiSample& ls, PathState& path,
+                                                 SampledSpectrum* r_u, SampledSpectrum* r_l,
+                                                 ThreadContext& tc) const {
+    const int ch = path.channel;
+    SampledSpectrum t_ray(1.0f);
+    for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
+        SurfaceHit hit;
+        bool found = intersect(ray, &hit, tc);
+        if (found && hit.material && !hit.material->is_interface()) return SampledSpectrum(0.0f); // blocked
+        if (ray.medium) {
+            float tmax = found ? hit.t : ray.tmax;
+            if (ray.medium->is_homogeneous()) {
+                // Exact: T = exp(-σ_t d); the unidirectional technique would have passed with density T.
+                MediumProperties mp = ray.medium->sample_point(ray.o, tc.lambda);
+                float d = std::min(tmax, 3.0e38f / std::max(length(ray.d), 1e-30f)) * length(ray.d);
+                SampledSpectrum t = exp(-(mp.sigma_a + mp.sigma_s) * d);
+                t_ray *= t;
+                *r_u *= t;
+            } else {
+                SampledSpectrum t_maj = sample_t_maj(
+                    ray, tmax, path.rng.uniform_float(), path.rng, tc.lambda, ch,
+                    [&](Point3f, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
+                        // Ratio tracking: each tentative collision weighs by σ_n / σ_maj (PBR 4th ed. §14.2.2).
+                        SampledSpectrum sigma_n = clamp_zero(sigma_maj - mp.sigma_a - mp.sigma_s);
+                        float pdf = t_m[ch] * sigma_maj[ch];
+                        t_ray *= t_m * sigma_n / pdf;
+                        *r_l *= t_m * sigma_maj / pdf;
+                        *r_u *= t_m * sigma_n / pdf;
+                        SampledSpectrum estimate = t_ray / (*r_l + *r_u).average();
+                        if (estimate.max_component() < kShadowRouletteBelow) {
+                            if (path.rng.uniform_float() < 1 - kShadowKeep)
+                                t_ray = SampledSpectrum(0.0f);
+                            else
+                                t_ray /= kShadowKeep;
+                        }
+                        return !t_ray.is_black();
+                    });
+                SampledSpectrum rel = relative(t_maj, ch);
+                t_ray *= rel;
+                *r_l *= rel;
+                *r_u *= rel;
+            }
+        }
+        if (t_ray.is_black() || !t_ray.is_finite()) return SampledSpectrum(0.0f);
+        if (!found) return t_ray;
+        // Through the interface, on towards the light.
+        if (ls.at_infinity)
+            ray = hit.spawn_ray(ls.wi);
+        else if (ls.n_light == Normal3f{})
+            ray = hit.spawn_ray_to(ls.p_light);
+        else {
+            const Medium* m = hit.medium_for(ls.p_light - hit.p);
+            ray = spawn_ray_to(hit.p, hit.p_error, hit.n, ls.p_light, ls.p_light_error, ls.n_light);
+            ray.medium = m;
+        }
+    }
+    return SampledSpectrum(0.0f);
+}
+
+SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path, ThreadContext& tc) const {
+    Sampler& sampler = tc.sampler;
+    float u_light = sampler.get_1d();
+    Point2f u_li = sampler.get_2d();
+    LightSampleContext ctx = v.hit ? LightSampleContext(*v.hit) : LightSampleContext(v.p, {}, {});
+    float pmf = 0;
+    const Light* light = scene_.light_sampler.sample(u_light, &pmf);
+    if (!light || pmf <= 0) return {};
+    std::optional<LightLiSample> ls = light->sample_li(ctx, u_li, tc.lambda);
+    if (!ls || ls->biradiance.s.is_black()) return {};
+
+    // The scattering's value f |cos θ| (surface) or p (medium) and its density for the light's direction.
+    SampledSpectrum f_hat;
+    float scatter_pdf = 0;
+    Ray shadow;
+    if (v.hit) {
+        Bsdf3 f = v.bsdf->f(v.hit->wo, ls->wi);
+        f_hat = f.s * abs_dot(ls->wi, v.hit->ns);
+        if (f_hat.is_black()) return {};
+        scatter_pdf = v.bsdf->pdf(v.hit->wo, ls->wi).value;
+        const SurfaceHit& h = *v.hit;
+        if (ls->at_infinity)
+            shadow = h.spawn_ray(ls->wi);
+        else if (ls->n_light == Normal3f{})
+            shadow = h.spawn_ray_to(ls->p_light);
+        else {
+            shadow = spawn_ray_to(h.p, h.p_error, h.n, ls->p_light, ls->p_light_error, ls->n_light);
+            shadow.medium = h.medium_for(ls->p_light - h.p);
+        }
+    } else {
+        float p = v.phase.p(dot(v.travel, ls->wi));
+        f_hat = SampledSpectrum(p);
+        scatter_pdf = p;
+        if (ls->at_infinity)
+            shadow = Ray{v.p, ls->wi, kInfinity, v.medium};
+        else if (ls->n_light == Normal3f{})
+            shadow = Ray{v.p, ls->p_light - v.p, 1 - 1e-4f, v.medium};
+        else {
+            Point3f target = offset_ray_origin(ls->p_light, ls->p_light_error, ls->n_light, v.p - ls->p_light);
+            shadow = Ray{v.p, target - v.p, 1 - 1e-4f, v.medium};
+        }
+    }
+
+    SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
+    SampledSpectrum t_ray = transmittance(shadow, *ls, path, &r_u_t, &r_l_t, tc);
+    if (t_ray.is_black()) return {};
+
+    // Contribution β f T L / avg(r_l + r_u) with r_l = r_p r_l,t p_light and r_u = r_p r_u,t p_scatter,
+    // written with the light's biradiance L / p_light (which a delta light gives directly).
+    SampledSpectrum r_l = path.r_u * r_l_t;
+    SampledSpectrum r_u(0.0f);
+    if (!is_delta(light->type())) r_u = path.r_u * r_u_t * (scatter_pdf / (pmf * ls->pdf.value));
+    float denom = (r_l + r_u).average();
+    if (!(denom > 0)) return {};
+    return path.beta * f_hat * t_ray * ls->biradiance.s / (pmf * denom);
+}
+
+Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) const {
+    Sampler& sampler = tc.sampler;
+    Ray ray = camera_ray;
+    ray.medium = scene_.camera_medium;
+    PathState path;
+    path.channel = std::min(kSpectrumSamples - 1, int(sampler.get_1d() * kSpectrumSamples));
+    {
+        float a = sampler.get_1d(), b = sampler.get_1d();
+        path.rng.set_sequence(hash(std::uint32_t(a * 0x1p32f), std::uint32_t(b * 0x1p32f)));
+    }
+    const int ch = path.channel;
+    SampledSpectrum& beta = path.beta;
+    SampledSpectrum& r_u = path.r_u;
+    SampledSpectrum& r_l = path.r_l;
+    SampledSpectrum l(0.0f);
+    bool specular_bounce = false;
+    float eta_scale = 1;
+    int depth = 0;
+    LightSampleContext prev_ctx;
+
+    // Emission found by the unidirectional technique, weighed against light sampling from prev_ctx.
+    auto add_emission = [&](SampledSpectrum le, const Light* light, const SurfaceHit* hit) {
+        if (le.is_black()) return;
+        if (depth == 0 || specular_bounce) {
+            l += beta * le / r_u.average();
+        } else {
+            float p_light = scene_.light_sampler.pmf(light) * light->pdf_li(prev_ctx, ray.d, hit).value;
+            l += beta * le / (r_u + r_l * p_light).average();
+        }
+    };
+
+    for (int crossings = 0; crossings < 4 * kMaxCrossings;) {
+        SurfaceHit hit;
+        bool found = intersect(ray, &hit, tc);
+        if (ray.medium) {
+            bool scattered = false, terminated = false;
+            float tmax = found ? hit.t : kInfinity;
+            const Medium* medium = ray.medium;
+            SampledSpectrum t_maj = sample_t_maj(
+                ray, tmax, sampler.get_1d(), path.rng, tc.lambda, ch,
+                [&](Point3f p, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
+                    // The medium's emission σ_a Le, collected at every tentative collision.
+                    if ((max_depth_ < 0 || depth < max_depth_) && !mp.le.is_black()) {
+                        float pdf = sigma_maj[ch] * t_m[ch];
+                        SampledSpectrum r_e = r_u * sigma_maj * t_m / pdf;
+                        float avg = r_e.average();
+                        if (avg > 0) l += beta * t_m / pdf * mp.sigma_a * mp.le / avg;
+                    }
+                    float p_absorb = mp.sigma_a[ch] / sigma_maj[ch];
+                    float p_scatter = mp.sigma_s[ch] / sigma_maj[ch];
+                    float u = path.rng.uniform_float();
+                    if (u < p_absorb) {
+                        terminated = true;
+                        return false;
+                    }
+                    if (u < p_absorb + p_scatter) {
+                        if (max_depth_ >= 0 && depth >= max_depth_) {
+                            terminated = true;
+                            return false;
+                        }
+                        ++depth;
+                        float pdf = t_m[ch] * mp.sigma_s[ch];
+                        beta *= t_m * mp.sigma_s / pdf;
+                        r_u *= t_m * mp.sigma_s / pdf;
+                        if (beta.is_black() || r_u.is_black()) {
+                            terminated = true;
+                            return false;
+                        }
+                        Vertex v;
+                        v.p = p;
+                        v.medium = medium;
+                        v.travel = ray.d / length(ray.d);
+                        v.phase = mp.phase;
+                        l += sample_light(v, path, tc);
+                        float phase_pdf = 0;
+                        Vector3f wi = mp.phase.sample(v.travel, sampler.get_2d(), &phase_pdf);
+                        if (!(phase_pdf > 0)) {
+                            terminated = true;
+                            return false;
+                        }
+                        // β *= p / pdf = 1 for the exactly sampled Henyey-Greenstein.
+                        r_l = r_u / phase_pdf;
+                        prev_ctx = LightSampleContext(p, {}, {});
+                        ray = Ray{p, wi, kInfinity, medium};
+                        specular_bounce = false;
+                        scattered = true;
+                        return false;
+                    }
+                    // A null collision: the walk goes on.
+                    SampledSpectrum sigma_n = clamp_zero(sigma_maj - mp.sigma_a - mp.sigma_s);
+                    float pdf = t_m[ch] * sigma_n[ch];
+                    if (pdf == 0) {
+                        beta = SampledSpectrum(0.0f);
+                        return false;
+                    }
+                    beta *= t_m * sigma_n / pdf;
+                    r_u *= t_m * sigma_n / pdf;
+                    r_l *= t_m * sigma_maj / pdf;
+                    return !beta.is_black() && !r_u.is_black();
+                });
+            if (terminated || beta.is_black() || r_u.is_black() || !beta.is_finite()) break;
+            if (scattered) continue;
+            SampledSpectrum rel = relative(t_maj, ch);
+            beta *= rel;
+            r_u *= rel;
+            // Light sampling crossed a homogeneous medium exactly (density 1), a grid by ratio tracking.
+            if (medium->is_homogeneous())
+                r_l *= t_maj[ch] > 0 ? 1 / t_maj[ch] : 0.0f;
+            else
+                r_l *= rel;
+            if (beta.is_black()) break;
+        }
+
+        if (!found) {
+            for (const Light* env : scene_.infinite_lights) add_emission(env->le(ray, tc.lambda).s, env, nullptr);
+            break;
+        }
+        if (hit.area_light) add_emission(hit.area_light->radiance(hit, hit.wo, tc.lambda).s, hit.area_light, &hit);
+
+        tc.arena.reset();
+        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.lambda, tc.arena) : BSDF();
+        if (!bsdf) {
+            // A boundary between media with no surface: the path goes on unchanged.
+            ray = hit.spawn_ray(ray.d);
+            ++crossings;
+            continue;
+        }
+        if (bsdf.flags() == kNone) break;
+        if (max_depth_ >= 0 && depth >= max_depth_) break;
+        ++depth;
+
+        if (bsdf.is_non_specular()) {
+            Vertex v;
+            v.hit = &hit;
+            v.bsdf = &bsdf;
+            l += sample_light(v, path, tc);
+        }
+        prev_ctx = LightSampleContext(hit);
+
+        float u_lobe = sampler.get_1d();
+        Point2f u_dir = sampler.get_2d();
+        auto bs = bsdf.sample(hit.wo, u_lobe, u_dir);
+        if (!bs) break;
+        beta *= throughput_weight(bs->f, abs_dot(bs->wi, hit.ns), bs->pdf);
+        float pdf_for_mis = bs->pdf_is_proportional ? bsdf.pdf(hit.wo, bs->wi).value : bs->pdf.value;
+        r_l = pdf_for_mis > 0 ? r_u / pdf_for_mis : SampledSpectrum(0.0f);
+        specular_bounce = bs->is_specular();
+        if (bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
+        ray = hit.spawn_ray(bs->wi);
+
+        if (!beta.is_finite() || beta.is_black()) break;
+        // Russian roulette on the MIS-weighted throughput, after the first bounces.
+        float u_rr = sampler.get_1d();
+        float rr_beta = (beta * eta_scale / r_u.average()).max_component();
+        if (rr_beta < 1 && depth > 1) {
+            float q = std::max(0.0f, 1 - rr_beta);
+            if (u_rr < q) break;
+            beta /= 1 - q;
+        }
+    }
+    return Radiance3(l);
+}
+
+} // namespace illum

@@ -1,0 +1,69 @@
+// Volumetric path tracing (pbrt-v4's "volpath"; Miller, Georgiev & Jarosz 2019, "A Null-Scattering Path
+// Integral Formulation of Light Transport"; PBR 4th ed. §14.2). In a medium the path samples tentative
+// collisions against the majorant (delta tracking, sample_majorant.h) and at each chooses absorption,
+// real scattering or a null collision with probabilities σ_a/σ_maj, σ_s/σ_maj and σ_n/σ_maj; emission of
+// the medium (σ_a Le) is collected at every collision. At surfaces and real scattering events next-event
+// estimation samples a light, its shadow ray passing through surfaces without material and estimating
+// the media's transmittance: exactly (exp(-σ_t d)) in a homogeneous medium, by ratio tracking in others.
+//
+// Chromatic media: the distances are sampled with one channel's coefficients, chosen uniformly per path,
+// and every estimate is divided by the average over the channels of the path's density (spectral MIS:
+// the rescaled densities r_u of the unidirectional technique and r_l of light sampling, relative to the
+// sampling channel's), so a colour whose extinction differs from the sampled one does not explode the
+// variance. Light and BSDF/phase sampling are combined by the balance heuristic on those densities.
+//
+// The exact homogeneous transmittance is a technique of its own (density 1 along the segment, where pbrt-v4's
+// ratio tracking, with a majorant equal to σ_t, has a Bernoulli estimate of density T); both sides of MIS
+// weigh it so (light sampling's r_l omits T there), which removes the shadow rays' binary noise in fog.
+#pragma once
+
+#include "illum/bsdf/bxdf.h"
+#include "illum/light/light.h"
+#include "illum/math/rng.h"
+#include "illum/medium/henyey_greenstein.h"
+#include "illum/render/integrator.h"
+
+namespace illum {
+
+class Medium;
+
+class VolPathIntegrator final : public Integrator {
+public:
+    // max_depth: the number of scattering events, surface or volume (negative: unbounded).
+    VolPathIntegrator(const Scene& scene, int max_depth) : Integrator(scene), max_depth_(max_depth) {}
+    Radiance3 estimate(const Ray& camera_ray, ThreadContext& tc) const override;
+
+    // Whether the scene has media at all: without, "volpath" renders with the surface path tracer.
+    static bool needed(const Scene& scene);
+
+    // The state of one path: throughput β and the rescaled densities r_u, r_l (per channel, relative to the
+    // sampling channel's), the sampling channel and the generator for the tracking's tentative collisions.
+    struct PathState {
+        SampledSpectrum beta{1.0f}, r_u{1.0f}, r_l{1.0f};
+        int channel = 0;
+        PCG32 rng;
+    };
+    // Where next-event estimation starts: a surface point with its BSDF, or a point in a medium with its
+    // phase function (then `hit` and `bsdf` are null).
+    struct Vertex {
+        const SurfaceHit* hit = nullptr;
+        const BSDF* bsdf = nullptr;
+        Point3f p;
+        const Medium* medium = nullptr; // the medium around a medium vertex
+        Vector3f travel;                // the incoming direction of travel (medium vertex)
+        HenyeyGreenstein phase;
+    };
+
+private:
+    // Next-event estimation: one light picked by power, its contribution weighed by spectral MIS.
+    SampledSpectrum sample_light(const Vertex& v, PathState& path, ThreadContext& tc) const;
+    // The transmittance estimate along `ray` to the light sample's point (or to infinity), through
+    // surfaces without material and across the media they separate; zero when a surface with a material
+    // blocks it. Multiplies r_u and r_l by the techniques' densities for the segments crossed.
+    SampledSpectrum transmittance(Ray ray, const LightLiSample& ls, PathState& path, SampledSpectrum* r_u,
+                                  SampledSpectrum* r_l, ThreadContext& tc) const;
+
+    int max_depth_;
+};
+
+} // namespace illum
