@@ -158,18 +158,43 @@ TEST_F(Cli, SceneWithoutWorldIsAnError) {
 
 // The parser's warnings (here: media) are errors under --strict too, not only the builder's.
 TEST_F(Cli, StrictRefusesParserWarnings) {
-    write_text(dir_ / "fog.pbrt", "Film \"rgb\" \"integer xresolution\" [8] \"integer yresolution\" [8]\n"
-                                  "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
-                                  "WorldBegin\nShape \"sphere\"\n");
-    CliRun r = illum("render fog.pbrt --spp 1 -o u.exr", dir_);
+    write_text(dir_ / "blur.pbrt", "Film \"rgb\" \"integer xresolution\" [8] \"integer yresolution\" [8]\n"
+                                   "TransformTimes 0 1\n"
+                                   "WorldBegin\nShape \"sphere\"\n");
+    CliRun r = illum("render blur.pbrt --spp 1 -o u.exr", dir_);
     EXPECT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.err.find("warning: fog.pbrt:2:1: participating media are not supported"), std::string::npos)
-        << r.err;
-    expect_error(illum("render fog.pbrt --spp 1 --strict -o v.exr", dir_),
-                 "error: fog.pbrt:2:1: participating media are not supported");
+    EXPECT_NE(r.err.find("warning: blur.pbrt:2:1: motion blur is not supported"), std::string::npos) << r.err;
+    expect_error(illum("render blur.pbrt --spp 1 --strict -o v.exr", dir_),
+                 "error: blur.pbrt:2:1: motion blur is not supported");
     EXPECT_FALSE(fs::exists(dir_ / "v.exr"));
-    EXPECT_EQ(illum("info fog.pbrt", dir_).exit_code, 0);
-    expect_error(illum("info fog.pbrt --strict", dir_), "error: fog.pbrt:2:1: participating media");
+    EXPECT_EQ(illum("info blur.pbrt", dir_).exit_code, 0);
+    expect_error(illum("info blur.pbrt --strict", dir_), "error: blur.pbrt:2:1: motion blur");
+}
+
+// Media: `illum info` lists each medium and the shapes that bound it; a medium that was never made and a
+// negative coefficient are positioned errors (exit 2), and no output is written.
+TEST_F(Cli, MediaInfoAndErrors) {
+    const std::string head = "Film \"rgb\" \"integer xresolution\" [8] \"integer yresolution\" [8]\n"
+                             "WorldBegin\n";
+    write_text(dir_ / "fog.pbrt", head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+                                         "MediumInterface \"fog\" \"\"\nMaterial \"interface\"\n"
+                                         "Shape \"sphere\"\n");
+    CliRun info = illum("info fog.pbrt", dir_);
+    EXPECT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_NE(info.out.find("medium \"fog\": homogeneous"), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find("inside \"sphere\" at fog.pbrt:6:1"), std::string::npos) << info.out;
+    EXPECT_EQ(illum("render fog.pbrt --spp 1 -o f.exr", dir_).exit_code, 0);
+
+    write_text(dir_ / "undefined.pbrt", head + "MediumInterface \"smoke\" \"\"\nShape \"sphere\"\n");
+    expect_error(illum("render undefined.pbrt --spp 1 -o u.exr", dir_),
+                 "undefined.pbrt:3:1: medium \"smoke\" was never made");
+    write_text(dir_ / "negative.pbrt",
+               head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"rgb sigma_s\" [1 -2 1]\n");
+    expect_error(illum("render negative.pbrt --spp 1 -o n.exr", dir_), "negative.pbrt:3:");
+    write_text(dir_ / "nan.pbrt",
+               head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"float g\" [nan]\n");
+    expect_error(illum("render nan.pbrt --spp 1 -o x.exr", dir_), "nan.pbrt:3:");
+    for (const char* out : {"u.exr", "n.exr", "x.exr"}) EXPECT_FALSE(fs::exists(dir_ / out)) << out;
 }
 
 // The lines of `illum diff`'s table (up to the first line that is not a row), each of the same width.

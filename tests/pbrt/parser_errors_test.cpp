@@ -173,8 +173,6 @@ TEST(PbrtParserErrors, WorldBeginMayComeFromAnIncludedFile) {
 // --strict: the first of the parser's warnings is an error at its position; without it, a warning.
 TEST(PbrtParserErrors, StrictTurnsParserWarningsIntoErrors) {
     const char* cases[][3] = {
-        {"Camera \"perspective\"\n  MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\nWorldBegin\n",
-         "bad.pbrt:2:3", "participating media are not supported"},
         {"ActiveTransform EndTime\nTranslate 1 0 0\nWorldBegin\n", "bad.pbrt:1:1", "motion blur"},
         {"WorldBegin\nTransformBegin\nTransformEnd\n", "bad.pbrt:2:1", "TransformBegin/TransformEnd"},
         {"WorldBegin\nWorldEnd\n", "bad.pbrt:2:1", "WorldEnd"},

@@ -27,6 +27,7 @@ public:
     }
     // Φ = π A L for a one-sided Lambertian emitter, twice that for a two-sided one.
     Power3 power() const override;
+    AreaPdf pdf_le_position(const SurfaceHit&) const override { return AreaPdf(1 / shape_->area()); }
     // A point uniform by area, a cosine-weighted direction about its normal (either side with
     // probability 1/2 when two-sided): flux = L cos θ / (p_A · cos θ / π) = π L / p_A (× 2 two-sided).
     std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,

@@ -82,6 +82,9 @@ public:
     virtual Radiance3 le(const Ray&, const SampledWavelengths&) const { return {}; }
     // In RGB (light selection by power does not depend on the mode).
     virtual Power3 power() const = 0;
+    // The area density with which sample_le() starts a photon at the point of `hit` on an area light (for
+    // weighing a light seen directly against the camera's sampling); zero for the other lights.
+    virtual AreaPdf pdf_le_position(const SurfaceHit&) const { return AreaPdf(0); }
     // Photon emission: an origin from u1 and a direction from u2 (see LightLeSample); nullopt when the
     // light emits nothing there. Infinite and directional lights need preprocess() first.
     virtual std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
@@ -89,6 +92,15 @@ public:
 
     // Position in the scene's light list, set by the scene (for selection pmfs).
     std::uint32_t index = 0;
+    // The media around the light, set by the scene: an area light on a surface that separates two media
+    // has the surface's interface; any other light sits in `medium` (pbrt-v4: the outside medium current
+    // at its directive). Photons leave into medium_towards(their direction, the emitter's normal).
+    const Medium* medium = nullptr;
+    const MediumInterface* medium_interface = nullptr;
+    const Medium* medium_towards(Vector3f d, Normal3f n) const {
+        if (!medium_interface) return medium;
+        return dot(d, n) > 0 ? medium_interface->outside : medium_interface->inside;
+    }
 
 private:
     LightType type_;

@@ -6,6 +6,7 @@
 #include "illum/render/lightpath_integrator.h"
 #include "illum/render/path_integrator.h"
 #include "illum/render/sppm_integrator.h"
+#include "illum/render/volpath_caustics.h"
 #include "illum/render/volpath_integrator.h"
 #include "illum/util/error.h"
 
@@ -32,6 +33,9 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene
     if (name == "volpath") {
         // Without media volpath's transport is the path tracer's, which is faster on surfaces alone.
         if (!VolPathIntegrator::needed(scene)) return std::make_unique<PathIntegrator>(scene, max_depth);
+        // Caustics by light tracing where the camera has an importance function to connect to.
+        if (scene.camera && scene.camera->has_importance())
+            return std::make_unique<VolPathCausticsIntegrator>(scene, max_depth);
         return std::make_unique<VolPathIntegrator>(scene, max_depth);
     }
     if (name == "direct") return std::make_unique<DirectIntegrator>(scene, max_depth);

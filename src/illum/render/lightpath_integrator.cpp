@@ -9,6 +9,9 @@
 #include <thread>
 
 #include "illum/light/light.h"
+#include "illum/medium/sample_majorant.h"
+#include "illum/render/direct_view_mis.h"
+#include "illum/render/shadow_transmittance.h"
 #include "illum/util/error.h"
 #include "illum/util/progress.h"
 
@@ -28,8 +31,8 @@ float shading_normal_adjoint(const SurfaceHit& hit, Vector3f wo, Vector3f wi) {
 
 } // namespace
 
-LightPathIntegrator::LightPathIntegrator(const Scene& scene, int max_depth)
-    : WholeImageIntegrator(scene), max_depth_(max_depth) {
+LightPathIntegrator::LightPathIntegrator(const Scene& scene, int max_depth, bool caustics_only)
+    : WholeImageIntegrator(scene), max_depth_(max_depth), caustics_only_(caustics_only) {
     if (!scene.camera || !scene.camera->has_importance())
         throw Error(
             "integrator \"lightpath\" needs a perspective camera or an orthographic one without a lens "
@@ -53,10 +56,35 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
     float pmf = 0;
     const Light* light = scene_.light_sampler.sample(sampler.get_1d(), &pmf);
     if (!light || !(pmf > 0)) return dropped;
+    // Caustics only: the environment's caustics stay with the camera paths (their light end is not traced).
+    if (caustics_only_ && light->type() == LightType::Infinite) return dropped;
     Point2f u_pos = sampler.get_2d(), u_dir = sampler.get_2d();
     std::optional<LightLeSample> les = light->sample_le(u_pos, u_dir, tc.lambda);
     if (!les || !(les->pdf_pos.value > 0) || !(les->pdf_dir.value > 0) || les->flux.is_black())
         return dropped;
+    // Media: collisions are sampled in one channel, chosen per particle, and every splat is divided by the
+    // average over the channels of the path's density relative to it (r_u; volpath_integrator.h).
+    const int ch = std::min(kSpectrumSamples - 1, int(sampler.get_1d() * kSpectrumSamples));
+    PCG32 rng;
+    {
+        float a = sampler.get_1d(), b = sampler.get_1d();
+        rng.set_sequence(hash(std::uint32_t(a * 0x1p32f), std::uint32_t(b * 0x1p32f)));
+    }
+    SampledSpectrum r_u(1.0f);
+
+    // A connection from `from` (in `medium`, leaving a surface when `hit` is given) to the lens point of
+    // cs: the media's transmittance and its light-sampling density ratio r_l (a camera connection is the
+    // only technique, so the splat divides by the path's average density ratio r_u r_l).
+    auto connect = [&](const SurfaceHit* hit, Point3f from, const Medium* medium, const CameraWiSample& cs,
+                       SampledSpectrum value) {
+        Ray shadow = hit ? hit->spawn_ray_to(cs.p_lens) : Ray{from, cs.p_lens - from, 1 - 1e-4f, medium};
+        SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
+        SampledSpectrum t = shadow_transmittance(scene_, shadow, ShadowTarget{cs.p_lens, {}, {}, false, {}}, ch,
+                                                 rng, tc.lambda, &r_u_t, &r_l_t, &tc.rays);
+        if (t.is_black()) return;
+        float avg = (r_u * r_l_t).average();
+        if (avg > 0) splat(cs.p_raster, Radiance3(value * t * ((cs.we / cs.pdf).value / avg)));
+    };
 
     // The light's own point seen by the camera (s = 1, t = 1; Veach 1997 §10.2): the point y on the light
     // came with area density p_A(y) = pdf_pos, the lens point with p_ω at y, so
@@ -73,27 +101,91 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
             Radiance3 le = light->radiance(y, cs->wi, tc.lambda);
             float cos_y = std::abs(dot(Vector3f(les->n), cs->wi));
             if (!le.is_black() && cos_y > 0) {
-                // From the lens to the light: spawn_ray_to stops 1e-4 of the way short of the (offset)
-                // light point, so the emitter itself never blocks it.
-                Ray shadow = spawn_ray_to(cs->p_lens, Vector3f{0, 0, 0}, Normal3f{}, les->ray.o);
-                if (!occluded(shadow, tc))
-                    splat(cs->p_raster, le * (cos_y / pmf) * (cs->we / cs->pdf) / les->pdf_pos);
+                // From the light towards the lens, in the medium on the lens's side of the emitter; the
+                // ray stops 1e-4 of the way short of the lens.
+                Point3f o = offset_ray_origin(les->ray.o, {}, les->n, cs->wi);
+                // Beside volpath, weighed against its camera rays that hit the light (direct_view_mis.h).
+                float w = caustics_only_ ? direct_view_weight(scene_, *light, les->ray.o, les->n, cs->p_lens,
+                                                              /*for_camera=*/false)
+                                         : 1.0f;
+                connect(nullptr, o, light->medium_towards(cs->wi, les->n), *cs,
+                        le.s * (w * cos_y / pmf) / les->pdf_pos.value);
             }
         }
     }
 
     // The particle's throughput: its flux estimate over the light's selection probability, then
-    // f |cos θ| / p per bounce (importance transport, with the adjoint's shading-normal factor).
-    Power3 beta = les->flux / pmf;
+    // f |cos θ| / p per bounce (importance transport, with the adjoint's shading-normal factor) and, in
+    // media, σ_s T / p per real collision.
+    SampledSpectrum beta = (les->flux / pmf).s;
     const float beta0 = beta.max_component();
     Ray ray = les->ray;
-    for (int depth = 0; max_depth_ < 0 || depth < max_depth_;) {
+    ray.medium = light->medium_towards(ray.d, les->n);
+    bool first_vertex = true; // caustics only: the first scattering must be specular
+    for (int depth = 0, crossings = 0; (max_depth_ < 0 || depth < max_depth_) && crossings < 1024;) {
         SurfaceHit hit;
-        if (!intersect(ray, &hit, tc)) break;
+        bool found = intersect(ray, &hit, tc);
+        if (ray.medium) {
+            bool scattered = false, terminated = false;
+            const Medium* medium = ray.medium;
+            SampledSpectrum t_maj = sample_t_maj(
+                ray, found ? hit.t : kInfinity, sampler.get_1d(), rng, tc.lambda, ch,
+                [&](Point3f p, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
+                    float u = rng.uniform_float();
+                    float p_absorb = mp.sigma_a[ch] / sigma_maj[ch], p_scatter = mp.sigma_s[ch] / sigma_maj[ch];
+                    if (u < p_absorb) {
+                        terminated = true;
+                        return false;
+                    }
+                    if (u < p_absorb + p_scatter) {
+                        // A medium vertex is not specular: with caustics only, a particle scattered first
+                        // in a medium is the camera paths' to find.
+                        if (caustics_only_ && first_vertex) {
+                            terminated = true;
+                            return false;
+                        }
+                        first_vertex = false;
+                        float pdf = t_m[ch] * mp.sigma_s[ch];
+                        beta *= t_m * mp.sigma_s / pdf;
+                        r_u *= t_m * mp.sigma_s / pdf;
+                        Vector3f travel = ray.d / length(ray.d);
+                        Point2f u_lens = sampler.get_2d();
+                        if (auto cs = camera.sample_wi(p, u_lens))
+                            connect(nullptr, p, medium, *cs, beta * mp.phase.p(dot(travel, cs->wi)));
+                        ++depth;
+                        float phase_pdf = 0;
+                        Vector3f wi = mp.phase.sample(travel, sampler.get_2d(), &phase_pdf);
+                        if (!(phase_pdf > 0) || (max_depth_ >= 0 && depth >= max_depth_)) {
+                            terminated = true;
+                            return false;
+                        }
+                        ray = Ray{p, wi, kInfinity, medium};
+                        scattered = true;
+                        return false;
+                    }
+                    SampledSpectrum sigma_n = clamp(sigma_maj - mp.sigma_a - mp.sigma_s, 0.0f, kInfinity);
+                    float pdf = t_m[ch] * sigma_n[ch];
+                    if (pdf == 0) {
+                        terminated = true;
+                        return false;
+                    }
+                    beta *= t_m * sigma_n / pdf;
+                    r_u *= t_m * sigma_n / pdf;
+                    return !beta.is_black();
+                });
+            if (terminated || beta.is_black() || !beta.is_finite()) break;
+            if (scattered) continue;
+            SampledSpectrum rel = relative_to_channel(t_maj, ch);
+            beta *= rel;
+            r_u *= rel;
+            if (beta.is_black()) break;
+        }
+        if (!found) break;
         tc.arena.reset();
         BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.lambda, tc.arena) : BSDF();
         if (!bsdf) {
             ray = hit.spawn_ray(ray.d); // an interface without material: no vertex
+            ++crossings;
             continue;
         }
         if (bsdf.flags() == kNone) break;
@@ -101,13 +193,12 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
 
         // Connect to the camera (t = 1): L = β f*(ωo → ωc) |cos θc| W_e / p_ω (PBR 4th ed. §16.3.2).
         Point2f u_lens = sampler.get_2d();
-        if (bsdf.is_non_specular()) {
+        if (bsdf.is_non_specular() && !(caustics_only_ && first_vertex)) {
             if (auto cs = camera.sample_wi(hit.p, u_lens)) {
                 Bsdf3 f = bsdf.f(wo, cs->wi, TransportMode::Importance);
                 float cos_c =
                     std::abs(dot(cs->wi, Vector3f(hit.ns))) * shading_normal_adjoint(hit, wo, cs->wi);
-                if (!f.is_black() && cos_c > 0 && !occluded(hit.spawn_ray_to(cs->p_lens), tc))
-                    splat(cs->p_raster, beta * f * cos_c * (cs->we / cs->pdf));
+                if (!f.is_black() && cos_c > 0) connect(&hit, hit.p, nullptr, *cs, beta * f.s * cos_c);
             }
         }
 
@@ -116,6 +207,8 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
         Point2f u_bsdf = sampler.get_2d();
         auto bs = bsdf.sample(wo, u_lobe, u_bsdf, TransportMode::Importance);
         if (!bs) break;
+        if (caustics_only_ && first_vertex && !bs->is_specular()) break;
+        first_vertex = false;
         float cos_i = std::abs(dot(bs->wi, Vector3f(hit.ns))) * shading_normal_adjoint(hit, wo, bs->wi);
         beta *= throughput_weight(bs->f, cos_i, bs->pdf);
         ray = hit.spawn_ray(bs->wi);

@@ -1,6 +1,9 @@
 // Light tracing (pbrt-v4's "lightpath"; Veach 1997 §10.2 with t = 1, PBR 4th ed. §16.3): particles leave
 // the lights and, at every vertex, connect to the camera through its importance (camera_importance.h);
-// each connection is splatted onto the film where it lands. It renders caustics seen directly that a
+// each connection is splatted onto the film where it lands. In participating media particles scatter at
+// real collisions (delta tracking, sample_majorant.h) and connect from there too; connections pass
+// interfaces and carry the media's transmittance (shadow_transmittance.h). Media's own emission is not
+// traced (volpath collects it). It renders caustics seen directly that a
 // path tracer finds only by chance, and cannot see specular surfaces (their vertices never connect).
 //
 // Budget: one particle per pixel sample, so spp means what it means to pbrt-v4 (spp × pixels particles).
@@ -26,7 +29,11 @@ public:
 
     // max_depth: the most scattering vertices a particle connects from (pbrt-v4's "maxdepth"; -1
     // unbounded, Russian roulette ends it). Throws illum::Error if the camera has no importance.
-    LightPathIntegrator(const Scene& scene, int max_depth);
+    // caustics_only: only paths whose first scattering after the light is specular (a delta lobe) and whose
+    // camera connection is from a non-specular vertex: the caustics that volpath leaves to light tracing
+    // (volpath_integrator.h), and the direct view of area lights weighed against volpath's camera rays
+    // (direct_view_mis.h); no particles from environment lights.
+    LightPathIntegrator(const Scene& scene, int max_depth, bool caustics_only = false);
     RenderResult render_image(const RenderOptions& options) const override;
 
 private:
@@ -35,6 +42,7 @@ private:
     int trace_particle(ThreadContext& tc, bool spectral, std::vector<Splat>& out) const;
 
     int max_depth_;
+    bool caustics_only_;
 };
 
 } // namespace illum

@@ -6,6 +6,8 @@
 #include "illum/light/light.h"
 #include "illum/medium/medium.h"
 #include "illum/medium/sample_majorant.h"
+#include "illum/render/direct_view_mis.h"
+#include "illum/render/shadow_transmittance.h"
 
 namespace illum {
 
@@ -13,81 +15,12 @@ namespace {
 
 SampledSpectrum clamp_zero(SampledSpectrum v) { return clamp(v, 0.0f, kInfinity); }
 
-// A ray's majorant transmittance normalised by the sampling channel's (the density with which the walk
-// passed the segment without a collision).
-SampledSpectrum relative(SampledSpectrum t_maj, int channel) {
-    return t_maj[channel] > 0 ? t_maj / t_maj[channel] : SampledSpectrum(0.0f);
-}
-
-// Roulette for ratio tracking once the estimate is small (PBR 4th ed. §14.2.2): kept with probability 1/4.
-constexpr float kShadowRouletteBelow = 0.05f;
-constexpr float kShadowKeep = 0.25f;
-// Surfaces without material a shadow ray or a path may cross before it is given up (a scene of nested
-// interfaces would need far fewer; this only guards against a degenerate one).
-constexpr int kMaxCrossings = 256;
+// Surfaces without material a path may cross (a guard against a degenerate scene of nested interfaces).
+constexpr int kMaxCrossings = 1024;
 
 } // namespace
 
 bool VolPathIntegrator::needed(const Scene& scene) { return !scene.media.empty(); }
-
-SampledSpectrum VolPathIntegrator::transmittance(Ray ray, const LightLiSample& ls, PathState& path,
-                                                 SampledSpectrum* r_u, SampledSpectrum* r_l,
-                                                 ThreadContext& tc) const {
-    const int ch = path.channel;
-    SampledSpectrum t_ray(1.0f);
-    for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
-        SurfaceHit hit;
-        bool found = intersect(ray, &hit, tc);
-        if (found && hit.material && !hit.material->is_interface()) return SampledSpectrum(0.0f); // blocked
-        if (ray.medium) {
-            float tmax = found ? hit.t : ray.tmax;
-            if (ray.medium->is_homogeneous()) {
-                // Exact: T = exp(-σ_t d); the unidirectional technique would have passed with density T.
-                MediumProperties mp = ray.medium->sample_point(ray.o, tc.lambda);
-                float d = std::min(tmax, 3.0e38f / std::max(length(ray.d), 1e-30f)) * length(ray.d);
-                SampledSpectrum t = exp(-(mp.sigma_a + mp.sigma_s) * d);
-                t_ray *= t;
-                *r_u *= t;
-            } else {
-                SampledSpectrum t_maj = sample_t_maj(
-                    ray, tmax, path.rng.uniform_float(), path.rng, tc.lambda, ch,
-                    [&](Point3f, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
-                        // Ratio tracking: each tentative collision weighs by σ_n / σ_maj (PBR 4th ed. §14.2.2).
-                        SampledSpectrum sigma_n = clamp_zero(sigma_maj - mp.sigma_a - mp.sigma_s);
-                        float pdf = t_m[ch] * sigma_maj[ch];
-                        t_ray *= t_m * sigma_n / pdf;
-                        *r_l *= t_m * sigma_maj / pdf;
-                        *r_u *= t_m * sigma_n / pdf;
-                        SampledSpectrum estimate = t_ray / (*r_l + *r_u).average();
-                        if (estimate.max_component() < kShadowRouletteBelow) {
-                            if (path.rng.uniform_float() < 1 - kShadowKeep)
-                                t_ray = SampledSpectrum(0.0f);
-                            else
-                                t_ray /= kShadowKeep;
-                        }
-                        return !t_ray.is_black();
-                    });
-                SampledSpectrum rel = relative(t_maj, ch);
-                t_ray *= rel;
-                *r_l *= rel;
-                *r_u *= rel;
-            }
-        }
-        if (t_ray.is_black() || !t_ray.is_finite()) return SampledSpectrum(0.0f);
-        if (!found) return t_ray;
-        // Through the interface, on towards the light.
-        if (ls.at_infinity)
-            ray = hit.spawn_ray(ls.wi);
-        else if (ls.n_light == Normal3f{})
-            ray = hit.spawn_ray_to(ls.p_light);
-        else {
-            const Medium* m = hit.medium_for(ls.p_light - hit.p);
-            ray = spawn_ray_to(hit.p, hit.p_error, hit.n, ls.p_light, ls.p_light_error, ls.n_light);
-            ray.medium = m;
-        }
-    }
-    return SampledSpectrum(0.0f);
-}
 
 SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path, ThreadContext& tc) const {
     Sampler& sampler = tc.sampler;
@@ -133,7 +66,9 @@ SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path
     }
 
     SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
-    SampledSpectrum t_ray = transmittance(shadow, *ls, path, &r_u_t, &r_l_t, tc);
+    ShadowTarget target{ls->p_light, ls->p_light_error, ls->n_light, ls->at_infinity, ls->wi};
+    SampledSpectrum t_ray = shadow_transmittance(scene_, shadow, target, path.channel, path.rng, tc.lambda,
+                                                 &r_u_t, &r_l_t, &tc.rays);
     if (t_ray.is_black()) return {};
 
     // Contribution β f T L / avg(r_l + r_u) with r_l = r_p r_l,t p_light and r_u = r_p r_u,t p_scatter,
@@ -162,6 +97,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
     SampledSpectrum& r_l = path.r_l;
     SampledSpectrum l(0.0f);
     bool specular_bounce = false;
+    bool first_vertex_non_specular = false; // the first scattering event was not specular
     float eta_scale = 1;
     int depth = 0;
     LightSampleContext prev_ctx;
@@ -169,7 +105,14 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
     // Emission found by the unidirectional technique, weighed against light sampling from prev_ctx.
     auto add_emission = [&](SampledSpectrum le, const Light* light, const SurfaceHit* hit) {
         if (le.is_black()) return;
-        if (depth == 0 || specular_bounce) {
+        // A caustic (specular bounce before the light, non-specular first vertex) is light tracing's.
+        if (caustics_by_light_tracing_ && hit && specular_bounce && depth > 0 && first_vertex_non_specular)
+            return;
+        if (depth == 0 && caustics_by_light_tracing_ && hit) {
+            // A light seen directly: weighed against light tracing's view of it (volpath_caustics.h).
+            float w = direct_view_weight(scene_, *light, hit->p, hit->n, camera_ray.o, /*for_camera=*/true);
+            l += beta * le * (w / r_u.average());
+        } else if (depth == 0 || specular_bounce) {
             l += beta * le / r_u.average();
         } else {
             float p_light = scene_.light_sampler.pmf(light) * light->pdf_li(prev_ctx, ray.d, hit).value;
@@ -177,7 +120,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         }
     };
 
-    for (int crossings = 0; crossings < 4 * kMaxCrossings;) {
+    for (int crossings = 0; crossings < kMaxCrossings;) {
         SurfaceHit hit;
         bool found = intersect(ray, &hit, tc);
         if (ray.medium) {
@@ -206,7 +149,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
                             terminated = true;
                             return false;
                         }
-                        ++depth;
+                        if (++depth == 1) first_vertex_non_specular = true;
                         float pdf = t_m[ch] * mp.sigma_s[ch];
                         beta *= t_m * mp.sigma_s / pdf;
                         r_u *= t_m * mp.sigma_s / pdf;
@@ -248,7 +191,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
                 });
             if (terminated || beta.is_black() || r_u.is_black() || !beta.is_finite()) break;
             if (scattered) continue;
-            SampledSpectrum rel = relative(t_maj, ch);
+            SampledSpectrum rel = relative_to_channel(t_maj, ch);
             beta *= rel;
             r_u *= rel;
             // Light sampling crossed a homogeneous medium exactly (density 1), a grid by ratio tracking.
@@ -293,6 +236,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         float pdf_for_mis = bs->pdf_is_proportional ? bsdf.pdf(hit.wo, bs->wi).value : bs->pdf.value;
         r_l = pdf_for_mis > 0 ? r_u / pdf_for_mis : SampledSpectrum(0.0f);
         specular_bounce = bs->is_specular();
+        if (depth == 1) first_vertex_non_specular = !specular_bounce;
         if (bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
         ray = hit.spawn_ray(bs->wi);
 

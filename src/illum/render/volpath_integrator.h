@@ -30,7 +30,10 @@ class Medium;
 class VolPathIntegrator final : public Integrator {
 public:
     // max_depth: the number of scattering events, surface or volume (negative: unbounded).
-    VolPathIntegrator(const Scene& scene, int max_depth) : Integrator(scene), max_depth_(max_depth) {}
+    // caustics_by_light_tracing: leave out the paths that volpath_caustics.h's light tracing renders (an area
+    // light found right after a specular bounce by a path whose first vertex was not specular).
+    VolPathIntegrator(const Scene& scene, int max_depth, bool caustics_by_light_tracing = false)
+        : Integrator(scene), max_depth_(max_depth), caustics_by_light_tracing_(caustics_by_light_tracing) {}
     Radiance3 estimate(const Ray& camera_ray, ThreadContext& tc) const override;
 
     // Whether the scene has media at all: without, "volpath" renders with the surface path tracer.
@@ -57,13 +60,9 @@ public:
 private:
     // Next-event estimation: one light picked by power, its contribution weighed by spectral MIS.
     SampledSpectrum sample_light(const Vertex& v, PathState& path, ThreadContext& tc) const;
-    // The transmittance estimate along `ray` to the light sample's point (or to infinity), through
-    // surfaces without material and across the media they separate; zero when a surface with a material
-    // blocks it. Multiplies r_u and r_l by the techniques' densities for the segments crossed.
-    SampledSpectrum transmittance(Ray ray, const LightLiSample& ls, PathState& path, SampledSpectrum* r_u,
-                                  SampledSpectrum* r_l, ThreadContext& tc) const;
 
     int max_depth_;
+    bool caustics_by_light_tracing_;
 };
 
 } // namespace illum

@@ -164,6 +164,7 @@ private:
                                                                     e->for_area(g->mesh->triangle_area(t)),
                                                                     e->two_sided);
                     light->set_alpha(g->alpha);
+                    set_light_media(*light, s, mi);
                     tri_lights.push_back(light.get());
                     scene_->lights.push_back(std::move(light));
                 }
@@ -176,6 +177,7 @@ private:
             auto l = std::make_unique<DiffuseAreaLight>(g->analytic.get(), e->for_area(g->analytic->area()),
                                                         e->two_sided);
             l->set_alpha(g->alpha);
+            set_light_media(*l, s, mi);
             light = l.get();
             scene_->lights.push_back(std::move(l));
         }
@@ -183,7 +185,16 @@ private:
     }
 
     void add_light(const LightDesc& l) {
-        if (auto light = make_light(l, diag_)) scene_->lights.push_back(std::move(light));
+        if (auto light = make_light(l, diag_)) {
+            light->medium = medium_named(l.medium, l.medium_loc);
+            scene_->lights.push_back(std::move(light));
+        }
+    }
+
+    // An area light's media: its shape's interface, or (inside and outside the same) that medium.
+    void set_light_media(Light& light, const ShapeDesc& s, const MediumInterface* mi) {
+        light.medium_interface = mi;
+        if (!mi) light.medium = medium_named(s.outside_medium, s.medium_loc);
     }
 
     // pbrt's ObjectBegin/ObjectInstance: each definition is built once, in its own space, as an Embree
