@@ -1,11 +1,16 @@
 #include "illum/bsdf/create_material.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 
 #include "illum/bsdf/albedo.h"
 #include "illum/bsdf/pbrt_materials.h"
 #include "illum/bsdf/registry.h"
 #include "illum/bsdf/shared_bxdf_material.h"
+#include "illum/bsdf/subsurface_material.h"
+#include "illum/medium/homogeneous_medium.h"
+#include "illum/medium/subsurface_coefficients.h"
 #include "illum/param/spectrum_param.h"
 #include "illum/radiometry/named_spectra.h"
 #include "illum/radiometry/spectra.h"
@@ -51,7 +56,8 @@ public:
                 tex_.color(m_.params, "transmittance", Color3(0.25f)), m_.params.get_float("scale", 1)));
         if (type == "interface") return own(std::make_unique<InterfaceMaterial>());
         if (type == "mix") return mix();
-        if (type == "measured" || type == "subsurface" || type == "hair") {
+        if (type == "subsurface") return subsurface();
+        if (type == "measured" || type == "hair") {
             tex_.diagnostics().unsupported(
                 m_.loc, fmt::format("material \"{}\" is approximated by a grey diffuse one", type));
             for (const Param& p : m_.params.params()) p.used = true;
@@ -65,6 +71,102 @@ public:
     }
 
 private:
+    // A constant RGB or spectrum parameter: its RGB and, for a spectrum, its table; nothing when absent. A
+    // texture is reported and rendered as absent.
+    struct ConstantSpectrum {
+        Color3 rgb;
+        std::shared_ptr<const DenselySampledSpectrum> spectrum;
+    };
+    std::optional<ConstantSpectrum> constant_spectrum(const std::string& name, SpectrumKind kind) {
+        const Param* p = m_.params.find(name);
+        if (!p) return std::nullopt;
+        if (p->type == ParamType::RGB) return ConstantSpectrum{*m_.params.get_rgb(name), nullptr};
+        if (p->type == ParamType::Spectrum) {
+            SpectrumParam s = spectrum_param(*p, kind);
+            return ConstantSpectrum{s.rgb, std::move(s.spectrum)};
+        }
+        if (p->type == ParamType::Float) {
+            float v = m_.params.get_float(name, 0);
+            return ConstantSpectrum{Color3(v), nullptr};
+        }
+        p->used = true;
+        tex_.diagnostics().unsupported(
+            p->loc, fmt::format("subsurface: a textured \"{}\" is not supported; its default is used", name));
+        return std::nullopt;
+    }
+
+    // pbrt-v4's "subsurface" (subsurface_material.h): the medium inside from the parameters, as pbrt-v4
+    // derives its coefficients (medium/subsurface_coefficients.h), and the dielectric boundary.
+    const Material* subsurface() {
+        const ParamSet& ps = m_.params;
+        float scale = ps.get_float("scale", kSubsurfaceDefaultScale);
+        float g = ps.get_float("g", kSubsurfaceDefaultG);
+        if (!(g > -1 && g < 1)) throw Error(ps.find("g")->loc, "\"g\" must lie in (-1, 1)");
+        if (!(scale >= 0)) throw Error(ps.find("scale")->loc, "\"scale\" must be non-negative");
+        DispersiveScalar eta = eta_param("eta", kSubsurfaceDefaultEta);
+        RoughnessParams rough = roughness();
+        std::string name = ps.get_string("name", "");
+        MediumSpectrum sigma_a, sigma_s;
+        auto check = [&](const std::string& param, Color3 c) {
+            for (float v : {c.r, c.g, c.b})
+                if (!std::isfinite(v) || v < 0)
+                    throw Error(ps.find(param)->loc,
+                                fmt::format("\"{}\" must be finite and non-negative", param));
+        };
+        if (!name.empty()) {
+            std::optional<SubsurfaceCoefficients> c = subsurface_from_name(name, scale);
+            if (!c) throw Error(ps.find("name")->loc, fmt::format("unknown measured medium \"{}\"", name));
+            if (g != 0)
+                tex_.diagnostics().unsupported(
+                    ps.find("g")->loc, "subsurface: \"g\" is 0 with a named medium (its σ_s is reduced)");
+            g = 0;
+            sigma_a = MediumSpectrum(c->sigma_a);
+            sigma_s = MediumSpectrum(c->sigma_s);
+        } else if (ps.has("sigma_a") || ps.has("sigma_s")) {
+            auto sa = constant_spectrum("sigma_a", SpectrumKind::Unbounded);
+            auto ss = constant_spectrum("sigma_s", SpectrumKind::Unbounded);
+            if (!sa || !ss) throw Error(m_.loc, "subsurface: give both \"sigma_a\" and \"sigma_s\", or neither");
+            check("sigma_a", sa->rgb);
+            check("sigma_s", ss->rgb);
+            sigma_a = sa->spectrum ? MediumSpectrum(sa->rgb, sa->spectrum) : MediumSpectrum(sa->rgb);
+            sigma_s = ss->spectrum ? MediumSpectrum(ss->rgb, ss->spectrum) : MediumSpectrum(ss->rgb);
+            sigma_a *= scale;
+            sigma_s *= scale;
+        } else if (ps.has("reflectance")) {
+            auto refl = constant_spectrum("reflectance", SpectrumKind::Unbounded);
+            auto mfp = constant_spectrum("mfp", SpectrumKind::Unbounded);
+            Color3 r = refl ? clamp(refl->rgb, 0.0f, 1.0f) : Color3(0.5f);
+            Color3 l = mfp ? mfp->rgb : Color3(kSubsurfaceDefaultMfp);
+            check("reflectance", r);
+            if (mfp) check("mfp", l);
+            EffectiveAlbedoTable table(eta.value, g);
+            SubsurfaceCoefficients c = subsurface_from_reflectance(r, l, scale, table);
+            // Spectral mode: reflectance and mean free path at each wavelength, inverted there (as pbrt-v4
+            // does per wavelength sample), tabulated per colour space the RGB inputs may be in.
+            auto sa = std::make_shared<MediumSpectrum::PerColorSpace>();
+            auto ss = std::make_shared<MediumSpectrum::PerColorSpace>();
+            for (int i = 0; i < RGBColorSpace::kCount; ++i) {
+                const RGBColorSpace& cs = RGBColorSpace::by_index(i);
+                UpliftedRgb rp = uplift_albedo_poly(r, cs), mp = uplift_unbounded_poly(l, cs);
+                auto at = [&](double nm) {
+                    float rho = refl && refl->spectrum ? (*refl->spectrum)(float(nm)) : float(rp(nm));
+                    float len = mfp && mfp->spectrum ? (*mfp->spectrum)(float(nm)) : float(mp(nm));
+                    return subsurface_from_reflectance(std::clamp(rho, 0.0f, 1.0f), len, scale, table);
+                };
+                (*sa)[std::size_t(i)] = DenselySampledSpectrum::from([&](double nm) { return at(nm).sigma_a; });
+                (*ss)[std::size_t(i)] = DenselySampledSpectrum::from([&](double nm) { return at(nm).sigma_s; });
+            }
+            sigma_a = MediumSpectrum(c.sigma_a, std::shared_ptr<const MediumSpectrum::PerColorSpace>(sa));
+            sigma_s = MediumSpectrum(c.sigma_s, std::shared_ptr<const MediumSpectrum::PerColorSpace>(ss));
+        } else {
+            SubsurfaceCoefficients c = subsurface_default(scale);
+            sigma_a = MediumSpectrum(c.sigma_a);
+            sigma_s = MediumSpectrum(c.sigma_s);
+        }
+        auto interior = std::make_unique<HomogeneousMedium>(sigma_a, sigma_s, g, Emission(Color3(0.0f)), false);
+        return own(std::make_unique<SubsurfaceMaterial>(std::move(eta), rough, std::move(interior)));
+    }
+
     const Material* own(std::unique_ptr<Material> m) {
         ctx_.owned.push_back(std::move(m));
         return ctx_.owned.back().get();

@@ -7,6 +7,7 @@
 #include "illum/bsdf/bxdf.h"
 #include "illum/bsdf/lambert.h"
 #include "illum/geometry/surface_hit.h"
+#include "illum/medium/medium.h"
 #include "illum/radiometry/uplift.h"
 #include "illum/texture/texture.h"
 #include "illum/util/arena.h"
@@ -23,6 +24,9 @@ public:
     // pbrt-v4's "interface": a boundary between media with no surface; light crosses it unchanged, and
     // shadow rays pass through it.
     virtual bool is_interface() const { return false; }
+    // The participating medium the material's surface encloses (pbrt-v4's "subsurface": scattering inside
+    // the shape), or none. The scene makes it the inside of the shape's MediumInterface.
+    virtual const Medium* interior() const { return nullptr; }
 };
 
 class DiffuseMaterial final : public Material {

@@ -3,6 +3,7 @@
 // RGBUnboundedSpectrum), times a scale. Constant over the medium; grids multiply it by their density.
 #pragma once
 
+#include <array>
 #include <memory>
 
 #include "illum/radiometry/densely_sampled_spectrum.h"
@@ -16,9 +17,14 @@ public:
     explicit MediumSpectrum(Color3 rgb) : rgb_(rgb), uplifted_(rgb, UpliftKind::Unbounded) {}
     MediumSpectrum(Color3 rgb, std::shared_ptr<const DenselySampledSpectrum> s)
         : rgb_(rgb), spectrum_(std::move(s)) {}
+    // A spectrum that depends on the colour space RGB inputs are given in (derived from uplifted inputs:
+    // a subsurface material's coefficients from its reflectance), tabulated for each.
+    using PerColorSpace = std::array<DenselySampledSpectrum, RGBColorSpace::kCount>;
+    MediumSpectrum(Color3 rgb, std::shared_ptr<const PerColorSpace> s) : rgb_(rgb), per_space_(std::move(s)) {}
 
     SampledSpectrum at(const SampledWavelengths& w) const {
         if (!w.spectral()) return SampledSpectrum(rgb_ * scale_);
+        if (per_space_) return (*per_space_)[std::size_t(w.color_space->index())].sample(w) * scale_;
         return (spectrum_ ? spectrum_->sample(w) : uplifted_.at(w)) * scale_;
     }
     Color3 rgb() const { return rgb_ * scale_; }
@@ -31,6 +37,7 @@ private:
     Color3 rgb_{0.0f};
     UpliftCache uplifted_;
     std::shared_ptr<const DenselySampledSpectrum> spectrum_;
+    std::shared_ptr<const PerColorSpace> per_space_;
     float scale_ = 1;
 };
 

@@ -20,7 +20,11 @@ constexpr int kMaxCrossings = 1024;
 
 } // namespace
 
-bool VolPathIntegrator::needed(const Scene& scene) { return !scene.media.empty(); }
+bool VolPathIntegrator::needed(const Scene& scene) {
+    if (!scene.media.empty()) return true;
+    return std::any_of(scene.materials.begin(), scene.materials.end(),
+                       [](const std::unique_ptr<Material>& m) { return m->interior() != nullptr; });
+}
 
 SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path, ThreadContext& tc) const {
     Sampler& sampler = tc.sampler;

@@ -107,10 +107,18 @@ private:
         return it->second.medium;
     }
 
-    // A shape's MediumInterface when it separates two media (else none: the ray's medium carries on).
-    const MediumInterface* medium_interface_of(const ShapeDesc& s) {
+    // A shape's MediumInterface when it separates two media (else none: the ray's medium carries on). A
+    // material that encloses a medium (subsurface) makes that the inside.
+    const MediumInterface* medium_interface_of(const ShapeDesc& s, const Material* material) {
         const Medium* inside = medium_named(s.inside_medium, s.medium_loc);
         const Medium* outside = medium_named(s.outside_medium, s.medium_loc);
+        if (material && material->interior()) {
+            if (inside != outside)
+                diag_.unsupported(s.medium_loc, "a subsurface material's own medium replaces the shape's "
+                                                "inside medium");
+            scene_->medium_interfaces.push_back({material->interior(), outside});
+            return &scene_->medium_interfaces.back();
+        }
         if (inside == outside) return nullptr;
         for (const std::string* n : {&s.inside_medium, &s.outside_medium})
             if (!n->empty())
@@ -154,7 +162,7 @@ private:
         std::optional<AreaEmission> e;
         if (s.area_light >= 0) e = create_area_emission(desc_.area_lights.at(s.area_light), diag_);
         const Material* material = material_of(s.material, s.loc);
-        const MediumInterface* mi = medium_interface_of(s);
+        const MediumInterface* mi = medium_interface_of(s, material);
         if (g->mesh) {
             std::vector<const Light*> tri_lights;
             if (e) {
