@@ -131,6 +131,18 @@ TEST(UniformGrid, TemperatureGridEmitsThePeakNormalisedBlackbody) {
     EXPECT_GT(lit, 20);
 }
 
+TEST(BlackbodyEmission, RgbTableIsWithinATenthOfAPercentAbove800K) {
+    SampledWavelengths rgb = SampledWavelengths::rgb_mode();
+    for (double t = 800; t < 2e5; t *= 1.0137) {
+        Color3 exact = blackbody_emission_rgb_exact(t);
+        SampledSpectrum got = blackbody_emission(float(t), rgb);
+        float m = std::max({std::abs(exact.r), std::abs(exact.g), std::abs(exact.b)});
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], exact[c], 1e-3f * m) << t;
+    }
+    EXPECT_EQ(blackbody_emission(100, rgb).max_component(), 0);
+    EXPECT_GT(blackbody_emission(1000, rgb).max_component(), 0);
+}
+
 TEST(UniformGrid, SpectralCoefficientsAreTheUpliftedRgbTimesDensity) {
     DescBuilder b("uniformgrid");
     b.res(2, 1, 1).f("density", {1, 3}).rgb("sigma_a", {0.2, 0.5, 0.9}).rgb("sigma_s", {1, 1, 1});
