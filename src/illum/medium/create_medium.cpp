@@ -36,10 +36,9 @@ MediumSpectrum medium_coefficient(const MediumDesc& desc, const std::string& nam
     return MediumSpectrum(s.rgb, std::move(s.spectrum));
 }
 
-Emission medium_emission(const MediumDesc& desc, bool* emissive) {
-    float scale = desc.params.get_float("Lescale", 1);
+Emission medium_le(const MediumDesc& desc, bool* nonzero) {
     const Param* p = desc.params.find("Le");
-    *emissive = false;
+    *nonzero = false;
     if (!p) return Emission(Color3(0.0f));
     Emission e;
     if (p->type == ParamType::RGB) {
@@ -54,9 +53,17 @@ Emission medium_emission(const MediumDesc& desc, bool* emissive) {
         desc.params.fail(*p, fmt::format("parameter \"Le\" has type {}, expected rgb, spectrum or blackbody",
                                          to_string(p->type)));
     }
+    *nonzero = e.rgb.max_component() > 0;
+    return e;
+}
+
+Emission medium_emission(const MediumDesc& desc, bool* emissive) {
+    float scale = desc.params.get_float("Lescale", 1);
+    bool nonzero = false;
+    Emission e = medium_le(desc, &nonzero);
     if (!(scale >= 0)) desc.params.fail(*desc.params.find("Lescale"), "\"Lescale\" must be non-negative");
     e *= scale;
-    *emissive = scale > 0 && e.rgb.max_component() > 0;
+    *emissive = scale > 0 && nonzero;
     return e;
 }
 

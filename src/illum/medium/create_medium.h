@@ -33,6 +33,8 @@ MediumSpectrum medium_coefficient(const MediumDesc& desc, const std::string& nam
 // The emitted radiance "Le" (an illuminant spectrum, as a light's L) times "Lescale"; black when absent.
 // *emissive tells whether it is non-zero.
 Emission medium_emission(const MediumDesc& desc, bool* emissive);
+// "Le" alone, for a medium whose "Lescale" is not one float (uniformgrid: a grid); *nonzero as above.
+Emission medium_le(const MediumDesc& desc, bool* nonzero);
 // σ_a and σ_s from "preset" (a measured medium's name) when given, else from the parameters (default 1),
 // each times "scale".
 void medium_scattering(const MediumDesc& desc, MediumSpectrum* sigma_a, MediumSpectrum* sigma_s);
