@@ -74,7 +74,8 @@ void run(const InfoArgs& args) {
         fmt::print("media       {}{}\n", scene->medium_reports.size(),
                    scene->camera_medium ? fmt::format(" (the camera is in \"{}\")", desc.camera.medium) : "");
         for (const Scene::MediumReport& m : scene->medium_reports) {
-            fmt::print("  medium \"{}\": {}, {:.1f} KiB\n", m.name, m.type, double(m.bytes) / 1024);
+            fmt::print("  medium {}: {}, {:.1f} KiB\n", m.name.front() == '(' ? m.name : "\"" + m.name + "\"",
+                       m.type, double(m.bytes) / 1024);
             if (m.bounded_by.empty()) fmt::print("    bounded by no shape\n");
             for (const std::string& b : m.bounded_by) fmt::print("    {}\n", b);
         }

@@ -67,11 +67,11 @@ RenderSetup volpath(int spp, bool spectral = false) {
 // σ_s = 0: a ray through depth d keeps exp(-σ_a d) of the light behind (per channel, chromatic σ_a).
 TEST(VolPath, AbsorbingSlabTransmittance) {
     const double d = 0.8, sa[3] = {0.5, 1.5, 3.0}, env = 0.6;
-    std::string scene = slab_scene(
-        fmt::format(R"(MakeNamedMedium "slab" "string type" "homogeneous" "rgb sigma_a" [{} {} {}]
+    std::string scene =
+        slab_scene(fmt::format(R"(MakeNamedMedium "slab" "string type" "homogeneous" "rgb sigma_a" [{} {} {}]
                        "rgb sigma_s" [0 0 0])",
-                    sa[0], sa[1], sa[2]),
-        d, fmt::format(R"(LightSource "infinite" "rgb L" [{0} {0} {0}])", env));
+                               sa[0], sa[1], sa[2]),
+                   d, fmt::format(R"(LightSource "infinite" "rgb L" [{0} {0} {0}])", env));
     double expected[3];
     for (int c = 0; c < 3; ++c) expected[c] = env * std::exp(-sa[c] * d);
     expect_channels(render_pbrt(scene, volpath(64)), expected, "absorbing slab, RGB");
@@ -121,9 +121,10 @@ AttributeEnd
 
 // Same image at any thread count (the tracking's generator is seeded from the sample, not the thread).
 TEST(VolPath, DeterministicAcrossThreads) {
-    std::string scene = slab_scene(R"(MakeNamedMedium "slab" "string type" "homogeneous" "rgb sigma_a" [0.2 0.2 0.2]
+    std::string scene =
+        slab_scene(R"(MakeNamedMedium "slab" "string type" "homogeneous" "rgb sigma_a" [0.2 0.2 0.2]
                                       "rgb sigma_s" [1 2 3] "float g" [-0.3])",
-                                   1.0, R"(LightSource "infinite" "rgb L" [1 1 1])");
+                   1.0, R"(LightSource "infinite" "rgb L" [1 1 1])");
     RenderSetup a = volpath(4), b = volpath(4);
     a.threads = 1;
     b.threads = 2;

@@ -125,7 +125,8 @@ private:
         } else if (ps.has("sigma_a") || ps.has("sigma_s")) {
             auto sa = constant_spectrum("sigma_a", SpectrumKind::Unbounded);
             auto ss = constant_spectrum("sigma_s", SpectrumKind::Unbounded);
-            if (!sa || !ss) throw Error(m_.loc, "subsurface: give both \"sigma_a\" and \"sigma_s\", or neither");
+            if (!sa || !ss)
+                throw Error(m_.loc, "subsurface: give both \"sigma_a\" and \"sigma_s\", or neither");
             check("sigma_a", sa->rgb);
             check("sigma_s", ss->rgb);
             sigma_a = sa->spectrum ? MediumSpectrum(sa->rgb, sa->spectrum) : MediumSpectrum(sa->rgb);
@@ -153,8 +154,10 @@ private:
                     float len = mfp && mfp->spectrum ? (*mfp->spectrum)(float(nm)) : float(mp(nm));
                     return subsurface_from_reflectance(std::clamp(rho, 0.0f, 1.0f), len, scale, table);
                 };
-                (*sa)[std::size_t(i)] = DenselySampledSpectrum::from([&](double nm) { return at(nm).sigma_a; });
-                (*ss)[std::size_t(i)] = DenselySampledSpectrum::from([&](double nm) { return at(nm).sigma_s; });
+                (*sa)[std::size_t(i)] =
+                    DenselySampledSpectrum::from([&](double nm) { return at(nm).sigma_a; });
+                (*ss)[std::size_t(i)] =
+                    DenselySampledSpectrum::from([&](double nm) { return at(nm).sigma_s; });
             }
             sigma_a = MediumSpectrum(c.sigma_a, std::shared_ptr<const MediumSpectrum::PerColorSpace>(sa));
             sigma_s = MediumSpectrum(c.sigma_s, std::shared_ptr<const MediumSpectrum::PerColorSpace>(ss));
@@ -163,7 +166,8 @@ private:
             sigma_a = MediumSpectrum(c.sigma_a);
             sigma_s = MediumSpectrum(c.sigma_s);
         }
-        auto interior = std::make_unique<HomogeneousMedium>(sigma_a, sigma_s, g, Emission(Color3(0.0f)), false);
+        auto interior =
+            std::make_unique<HomogeneousMedium>(sigma_a, sigma_s, g, Emission(Color3(0.0f)), false);
         return own(std::make_unique<SubsurfaceMaterial>(std::move(eta), rough, std::move(interior)));
     }
 

@@ -14,8 +14,8 @@ namespace {
 void check_coefficient(const MediumDesc& desc, const Param& p, Color3 c) {
     for (float v : {c.r, c.g, c.b})
         if (!std::isfinite(v) || v < 0)
-            desc.params.fail(p, fmt::format("medium \"{}\": \"{}\" must be finite and non-negative", desc.name,
-                                            p.name));
+            desc.params.fail(
+                p, fmt::format("medium \"{}\": \"{}\" must be finite and non-negative", desc.name, p.name));
 }
 
 } // namespace

@@ -33,7 +33,8 @@ MajorantIterator MajorantIterator::dda(const MajorantGrid* grid, Point3f o, Vect
         if (d[a] >= 0) {
             // Crossing into voxel v + 1 happens at the plane (v + 1) / n.
             float next = float(it.voxel_[ai] + 1) / float(n);
-            it.next_crossing_[ai] = d[a] > 0 ? t0 + (next - p[a]) / d[a] : std::numeric_limits<float>::infinity();
+            it.next_crossing_[ai] =
+                d[a] > 0 ? t0 + (next - p[a]) / d[a] : std::numeric_limits<float>::infinity();
             it.step_[ai] = 1;
             it.out_[ai] = n;
         } else {

@@ -40,7 +40,8 @@ public:
 
 private:
     std::size_t index(int x, int y, int z) const {
-        return (std::size_t(z) * std::size_t(res_[1]) + std::size_t(y)) * std::size_t(res_[0]) + std::size_t(x);
+        return (std::size_t(z) * std::size_t(res_[1]) + std::size_t(y)) * std::size_t(res_[0]) +
+               std::size_t(x);
     }
     std::array<int, 3> res_{0, 0, 0};
     std::vector<float> values_;

@@ -29,7 +29,8 @@ public:
     // The coefficients at world point p.
     virtual MediumProperties sample_point(Point3f p, const SampledWavelengths& lambda) const = 0;
     // The majorant segments of `ray` (world space, unit direction) over t in [0, tmax).
-    virtual MajorantIterator sample_ray(const Ray& ray, float tmax, const SampledWavelengths& lambda) const = 0;
+    virtual MajorantIterator sample_ray(const Ray& ray, float tmax,
+                                        const SampledWavelengths& lambda) const = 0;
 };
 
 } // namespace illum

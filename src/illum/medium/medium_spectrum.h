@@ -20,7 +20,8 @@ public:
     // A spectrum that depends on the colour space RGB inputs are given in (derived from uplifted inputs:
     // a subsurface material's coefficients from its reflectance), tabulated for each.
     using PerColorSpace = std::array<DenselySampledSpectrum, RGBColorSpace::kCount>;
-    MediumSpectrum(Color3 rgb, std::shared_ptr<const PerColorSpace> s) : rgb_(rgb), per_space_(std::move(s)) {}
+    MediumSpectrum(Color3 rgb, std::shared_ptr<const PerColorSpace> s)
+        : rgb_(rgb), per_space_(std::move(s)) {}
 
     SampledSpectrum at(const SampledWavelengths& w) const {
         if (!w.spectral()) return SampledSpectrum(rgb_ * scale_);

@@ -42,7 +42,8 @@ SampledSpectrum sample_t_maj(Ray ray, float tmax, float u, PCG32& rng, const Sam
             t += step;
             t_maj *= exp(-sigma_maj * step);
             Point3f p = ray(t);
-            if (!callback(p, ray.medium->sample_point(p, lambda), sigma_maj, t_maj)) return SampledSpectrum(1.0f);
+            if (!callback(p, ray.medium->sample_point(p, lambda), sigma_maj, t_maj))
+                return SampledSpectrum(1.0f);
             t_maj = SampledSpectrum(1.0f);
         }
     }

@@ -19,8 +19,8 @@ RenderRequest create_render_request(const EntityDesc& in, const EntityDesc& s, D
         r.integrator = "path";
     } else if (t == "directlighting") {
         r.integrator = "direct"; // pbrt-v3's name for it
-    } else if (t == "bdpt" || t == "mlt" || t == "randomwalk" ||
-               t == "simplevolpath" || t == "ambientocclusion" || t == "aov") {
+    } else if (t == "bdpt" || t == "mlt" || t == "randomwalk" || t == "simplevolpath" ||
+               t == "ambientocclusion" || t == "aov") {
         diag.unsupported(in.loc, fmt::format("integrator \"{}\" is rendered with \"path\"", t));
         r.integrator = "path";
         for (const Param& p : in.params.params()) p.used = true; // its own parameters are not ours to judge

@@ -24,7 +24,7 @@ bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, Thre
 // Adding an integrator: its file, and one line here and in integrator_names().
 const std::vector<std::string>& integrator_names() {
     static const std::vector<std::string> names = {"path",   "volpath",   "direct", "albedo",
-                                                     "normal", "lightpath", "sppm"};
+                                                   "normal", "lightpath", "sppm"};
     return names;
 }
 
@@ -45,9 +45,11 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene
     if (name == "sppm") {
         const RenderRequest& r = scene.request;
         return std::make_unique<SPPMIntegrator>(
-            scene, SppmSettings{max_depth, r.sppm_photons_per_iteration, r.sppm_radius, std::uint64_t(r.sppm_seed)});
+            scene,
+            SppmSettings{max_depth, r.sppm_photons_per_iteration, r.sppm_radius, std::uint64_t(r.sppm_seed)});
     }
-    throw Error("unknown integrator \"" + name + "\" (use path, volpath, direct, albedo, normal, lightpath or sppm)");
+    throw Error("unknown integrator \"" + name +
+                "\" (use path, volpath, direct, albedo, normal, lightpath or sppm)");
 }
 
 } // namespace illum

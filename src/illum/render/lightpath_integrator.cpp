@@ -79,8 +79,8 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
                        SampledSpectrum value) {
         Ray shadow = hit ? hit->spawn_ray_to(cs.p_lens) : Ray{from, cs.p_lens - from, 1 - 1e-4f, medium};
         SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
-        SampledSpectrum t = shadow_transmittance(scene_, shadow, ShadowTarget{cs.p_lens, {}, {}, false, {}}, ch,
-                                                 rng, tc.lambda, &r_u_t, &r_l_t, &tc.rays);
+        SampledSpectrum t = shadow_transmittance(scene_, shadow, ShadowTarget{cs.p_lens, {}, {}, false, {}},
+                                                 ch, rng, tc.lambda, &r_u_t, &r_l_t, &tc.rays);
         if (t.is_black()) return;
         float avg = (r_u * r_l_t).average();
         if (avg > 0) splat(cs.p_raster, Radiance3(value * t * ((cs.we / cs.pdf).value / avg)));
@@ -132,7 +132,8 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
                 ray, found ? hit.t : kInfinity, sampler.get_1d(), rng, tc.lambda, ch,
                 [&](Point3f p, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
                     float u = rng.uniform_float();
-                    float p_absorb = mp.sigma_a[ch] / sigma_maj[ch], p_scatter = mp.sigma_s[ch] / sigma_maj[ch];
+                    float p_absorb = mp.sigma_a[ch] / sigma_maj[ch],
+                          p_scatter = mp.sigma_s[ch] / sigma_maj[ch];
                     if (u < p_absorb) {
                         terminated = true;
                         return false;

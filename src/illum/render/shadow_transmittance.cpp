@@ -43,7 +43,8 @@ SampledSpectrum shadow_transmittance(const Scene& scene, Ray ray, const ShadowTa
                 SampledSpectrum t_maj = sample_t_maj(
                     ray, tmax, rng.uniform_float(), rng, lambda, ch,
                     [&](Point3f, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
-                        // Ratio tracking: each tentative collision weighs by σ_n / σ_maj (PBR 4th ed. §14.2.2).
+                        // Ratio tracking: each tentative collision weighs by σ_n / σ_maj (PBR 4th ed.
+                        // §14.2.2).
                         SampledSpectrum sigma_n = clamp_zero(sigma_maj - mp.sigma_a - mp.sigma_s);
                         float pdf = t_m[ch] * sigma_maj[ch];
                         t_ray *= t_m * sigma_n / pdf;

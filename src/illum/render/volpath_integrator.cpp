@@ -64,7 +64,8 @@ SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path
         else if (ls->n_light == Normal3f{})
             shadow = Ray{v.p, ls->p_light - v.p, 1 - 1e-4f, v.medium};
         else {
-            Point3f target = offset_ray_origin(ls->p_light, ls->p_light_error, ls->n_light, v.p - ls->p_light);
+            Point3f target =
+                offset_ray_origin(ls->p_light, ls->p_light_error, ls->n_light, v.p - ls->p_light);
             shadow = Ray{v.p, target - v.p, 1 - 1e-4f, v.medium};
         }
     }
@@ -207,10 +208,12 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         }
 
         if (!found) {
-            for (const Light* env : scene_.infinite_lights) add_emission(env->le(ray, tc.lambda).s, env, nullptr);
+            for (const Light* env : scene_.infinite_lights)
+                add_emission(env->le(ray, tc.lambda).s, env, nullptr);
             break;
         }
-        if (hit.area_light) add_emission(hit.area_light->radiance(hit, hit.wo, tc.lambda).s, hit.area_light, &hit);
+        if (hit.area_light)
+            add_emission(hit.area_light->radiance(hit, hit.wo, tc.lambda).s, hit.area_light, &hit);
 
         tc.arena.reset();
         BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.lambda, tc.arena) : BSDF();

@@ -16,6 +16,7 @@
 #include "illum/light/diffuse_area_light.h"
 #include "illum/light/light_factory.h"
 #include "illum/medium/create_medium.h"
+#include "illum/medium/homogeneous_medium.h"
 #include "illum/render/create_render_request.h"
 #include "illum/texture/texture_params.h"
 
@@ -103,7 +104,8 @@ private:
         if (name.empty()) return nullptr;
         auto it = media_.find(name);
         if (it == media_.end())
-            throw Error(loc, fmt::format("medium \"{}\" was never made (no MakeNamedMedium before this)", name));
+            throw Error(loc,
+                        fmt::format("medium \"{}\" was never made (no MakeNamedMedium before this)", name));
         return it->second.medium;
     }
 
@@ -116,6 +118,15 @@ private:
             if (inside != outside)
                 diag_.unsupported(s.medium_loc, "a subsurface material's own medium replaces the shape's "
                                                 "inside medium");
+            auto [it, fresh] = interior_reports_.try_emplace(material, scene_->medium_reports.size());
+            if (fresh)
+                scene_->medium_reports.push_back(
+                    {fmt::format("(subsurface material of the shape at {})", s.loc.to_string()),
+                     "homogeneous",
+                     sizeof(HomogeneousMedium),
+                     {}});
+            scene_->medium_reports[it->second].bounded_by.push_back(
+                fmt::format("inside \"{}\" at {}", s.type, s.loc.to_string()));
             scene_->medium_interfaces.push_back({material->interior(), outside});
             return &scene_->medium_interfaces.back();
         }
@@ -247,6 +258,7 @@ private:
         std::size_t report; // index into scene_->medium_reports
     };
     std::map<std::string, NamedMedium> media_;
+    std::map<const Material*, std::size_t> interior_reports_; // subsurface media, into medium_reports
 };
 
 } // namespace

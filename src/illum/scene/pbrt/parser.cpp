@@ -852,8 +852,7 @@ private:
     InstanceDefinition* instance_ = nullptr;
     std::vector<std::pair<std::string, SourceLocation>> named_material_uses_;
     Active active_ = Active::All;
-    bool warned_motion_ = false, warned_transform_begin_ = false, 
-         warned_instanced_area_light_ = false;
+    bool warned_motion_ = false, warned_transform_begin_ = false, warned_instanced_area_light_ = false;
 };
 
 } // namespace
