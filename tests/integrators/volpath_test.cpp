@@ -196,5 +196,42 @@ Shape "sphere" "float radius" [1]
     expect_channels(render_pbrt(scene, volpath(32)), expected, "subsurface white furnace");
 }
 
+// Single scattering of a point light in an infinite homogeneous medium, seen along one line (a tiny
+// orthographic window): L = ∫ σ_s e^{-σ_t t} p(cos θ) I e^{-σ_t r} / r² dt, by quadrature. volpath samples it
+// both by free flight and equiangularly towards the light (MIS); each alone is checked by the same total.
+TEST(VolPath, PointLightSingleScatteringQuadrature) {
+    const double sa = 0.1, ss = 0.4, g = 0.3, h = 0.3, zl = 2.0, intensity = 1.5;
+    for (bool spectral : {false, true}) {
+        std::string scene = fmt::format(R"(
+MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_a" [{0} {0} {0}] "rgb sigma_s" [{1} {1} {1}]
+  "float g" [{2}]
+MediumInterface "fog" "fog"
+Camera "orthographic" "float screenwindow" [-0.001 0.001 -0.001 0.001]
+Film "rgb" "integer xresolution" [16] "integer yresolution" [16]
+Sampler "independent"
+Integrator "volpath" "integer maxdepth" [1]
+WorldBegin
+LightSource "point" "point3 from" [0 {3} {4}] "rgb I" [{5} {5} {5}]
+)",
+                                        sa, ss, g, h, zl, intensity);
+        // The camera looks down +z (pbrt's default camera space); the light is at (0, h, zl).
+        auto integrand = [&](double t) {
+            double dz = zl - t, r2 = h * h + dz * dz, r = std::sqrt(r2), cos_theta = dz / r;
+            double d = 1 + g * g - 2 * g * cos_theta;
+            double phase = (1 - g * g) / (4 * M_PI * d * std::sqrt(d));
+            return ss * std::exp(-(sa + ss) * t) * phase * intensity * std::exp(-(sa + ss) * r) / r2;
+        };
+        const int n = 400000;
+        const double b = 40, dt = b / n;
+        double sum = integrand(0) + integrand(b);
+        for (int i = 1; i < n; ++i) sum += integrand(i * dt) * (i % 2 ? 4 : 2);
+        double expected_value = sum * dt / 3;
+        const double expected[3] = {expected_value, expected_value, expected_value};
+        expect_channels(render_pbrt(scene, volpath(64, spectral)), expected,
+                        spectral ? "point light single scattering, spectral" : "point light single scattering, RGB",
+                        spectral ? 4e-3 : 2e-4);
+    }
+}
+
 } // namespace
 } // namespace illum

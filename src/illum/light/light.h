@@ -85,6 +85,8 @@ public:
     // The area density with which sample_le() starts a photon at the point of `hit` on an area light (for
     // weighing a light seen directly against the camera's sampling); zero for the other lights.
     virtual AreaPdf pdf_le_position(const SurfaceHit&) const { return AreaPdf(0); }
+    // A point or spot light's position (for sampling distances towards it in media); none for the others.
+    virtual std::optional<Point3f> position() const { return std::nullopt; }
     // Photon emission: an origin from u1 and a direction from u2 (see LightLeSample); nullopt when the
     // light emits nothing there. Infinite and directional lights need preprocess() first.
     virtual std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,

@@ -30,6 +30,7 @@ public:
         return SolidAnglePdf(0);
     }
     // Φ = ∫ I dω = 4π I.
+    std::optional<Point3f> position() const override { return position_; }
     Power3 power() const override { return Intensity3(intensity_.rgb_value()) * SolidAngle(4 * kPi); }
     // Uniform over the sphere of directions: flux = I / (1/4π) = 4π I for every photon.
     std::optional<LightLeSample> sample_le(Point2f, Point2f u2,
@@ -42,7 +43,6 @@ public:
                              pdf_dir,
                              intensity(lambda) / pdf_dir};
     }
-    Point3f position() const { return position_; }
     Intensity3 intensity(const SampledWavelengths& lambda) const { return Intensity3(intensity_.at(lambda)); }
 
 private:

@@ -49,6 +49,7 @@ public:
     SolidAnglePdf pdf_li(const LightSampleContext&, Vector3f, const SurfaceHit*) const override {
         return SolidAnglePdf(0);
     }
+    std::optional<Point3f> position() const override { return position_; }
     Power3 power() const override {
         return Intensity3(intensity_.rgb_value()) *
                SolidAngle(2 * kPi * ((1 - cos_start_) + (cos_start_ - cos_end_) / 2));
@@ -61,7 +62,6 @@ public:
         Intensity3 i = intensity(w, lambda);
         return LightLeSample{Ray{position_, w}, {}, {}, AreaPdf(1), pdf_dir, i / pdf_dir};
     }
-    Point3f position() const { return position_; }
     Vector3f axis() const { return frame_.n; }
     float cos_start() const { return cos_start_; }
     float cos_end() const { return cos_end_; }

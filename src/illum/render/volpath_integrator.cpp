@@ -5,6 +5,7 @@
 #include "illum/bsdf/material.h"
 #include "illum/light/light.h"
 #include "illum/medium/medium.h"
+#include "illum/medium/equiangular.h"
 #include "illum/medium/sample_majorant.h"
 #include "illum/render/direct_view_mis.h"
 #include "illum/render/shadow_transmittance.h"
@@ -79,11 +80,56 @@ SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path
     // Contribution β f T L / avg(r_l + r_u) with r_l = r_p r_l,t p_light and r_u = r_p r_u,t p_scatter,
     // written with the light's biradiance L / p_light (which a delta light gives directly).
     SampledSpectrum r_l = path.r_u * r_l_t;
+    if (v.segment && light->position()) {
+        // This scattering point could also have come from equiangular sampling towards the light: the
+        // balance heuristic over free flight (density σ_s T per channel) and it (p_eq), in terms of the
+        // path's densities at the segment's origin: r_u0 (p_ff + p_eq) / p_ff[channel].
+        std::optional<Equiangular> eq = Equiangular::make(v.segment->o, v.segment->d, 0, v.segment->t_end,
+                                                          *light->position());
+        float p_eq = eq ? eq->pdf(v.t) : 0.0f;
+        r_l += r_l_t * v.segment->r_u0 * (p_eq / v.p_free_flight[path.channel]);
+    }
     SampledSpectrum r_u(0.0f);
     if (!is_delta(light->type())) r_u = path.r_u * r_u_t * (scatter_pdf / (pmf * ls->pdf.value));
     float denom = (r_l + r_u).average();
     if (!(denom > 0)) return {};
     return path.beta * f_hat * t_ray * ls->biradiance.s / (pmf * denom);
+}
+
+SampledSpectrum VolPathIntegrator::sample_equiangular(const Segment& seg, const Medium& medium,
+                                                     SampledSpectrum beta, PathState& path,
+                                                     ThreadContext& tc) const {
+    Sampler& sampler = tc.sampler;
+    float u_light = sampler.get_1d(), u_t = sampler.get_1d();
+    Point2f u_li = sampler.get_2d();
+    float pmf = 0;
+    const Light* light = scene_.light_sampler.sample(u_light, &pmf);
+    if (!light || pmf <= 0) return {};
+    std::optional<Point3f> c = light->position();
+    if (!c) return {}; // free flight alone samples the other lights' single scattering
+    std::optional<Equiangular> eq = Equiangular::make(seg.o, seg.d, 0, seg.t_end, *c);
+    if (!eq) return {};
+    float p_eq = 0;
+    float t = eq->sample(u_t, &p_eq);
+    if (!(p_eq > 0)) return {};
+    Point3f x = seg.o + seg.d * t;
+    MediumProperties mp = medium.sample_point(x, tc.lambda);
+    if (mp.sigma_s.is_black()) return {};
+    std::optional<LightLiSample> ls = light->sample_li(LightSampleContext(x, {}, {}), u_li, tc.lambda);
+    if (!ls || ls->biradiance.s.is_black()) return {};
+    SampledSpectrum t_cam = exp(-(mp.sigma_a + mp.sigma_s) * t); // exact: the medium is homogeneous
+    SampledSpectrum p_free_flight = mp.sigma_s * t_cam;
+    float phase = mp.phase.p(dot(seg.d, ls->wi));
+    Ray shadow{x, ls->p_light - x, 1 - 1e-4f, &medium};
+    SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
+    ShadowTarget target{ls->p_light, ls->p_light_error, ls->n_light, false, ls->wi};
+    SampledSpectrum t_ray = shadow_transmittance(scene_, shadow, target, path.channel, path.rng, tc.lambda,
+                                                 &r_u_t, &r_l_t, &tc.rays);
+    if (t_ray.is_black()) return {};
+    // The balance heuristic with free flight (sample_light): F / avg(r_u0 r_l,t (p_ff + p_eq)).
+    float denom = (seg.r_u0 * r_l_t * (p_free_flight + SampledSpectrum(p_eq))).average();
+    if (!(denom > 0)) return {};
+    return beta * t_cam * mp.sigma_s * (phase / (pmf * denom)) * t_ray * ls->biradiance.s;
 }
 
 Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) const {
@@ -132,6 +178,15 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
             bool scattered = false, terminated = false;
             float tmax = found ? hit.t : kInfinity;
             const Medium* medium = ray.medium;
+            // Equiangular single scattering towards point and spot lights on a homogeneous stretch.
+            Segment seg;
+            const bool equiangular =
+                point_lights_ && medium->is_homogeneous() && (max_depth_ < 0 || depth < max_depth_);
+            if (equiangular) {
+                float len = length(ray.d);
+                seg = Segment{ray.o, ray.d / len, found ? hit.t * len : kInfinity, r_u};
+                l += sample_equiangular(seg, *medium, beta, path, tc);
+            }
             SampledSpectrum t_maj = sample_t_maj(
                 ray, tmax, sampler.get_1d(), path.rng, tc.lambda, ch,
                 [&](Point3f p, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
@@ -167,6 +222,11 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
                         v.medium = medium;
                         v.travel = ray.d / length(ray.d);
                         v.phase = mp.phase;
+                        if (equiangular) {
+                            v.segment = &seg;
+                            v.t = distance(seg.o, p);
+                            v.p_free_flight = t_m * mp.sigma_s;
+                        }
                         l += sample_light(v, path, tc);
                         float phase_pdf = 0;
                         Vector3f wi = mp.phase.sample(v.travel, sampler.get_2d(), &phase_pdf);

@@ -33,7 +33,9 @@ public:
     // caustics_by_light_tracing: leave out the paths that volpath_caustics.h's light tracing renders (an area
     // light found right after a specular bounce by a path whose first vertex was not specular).
     VolPathIntegrator(const Scene& scene, int max_depth, bool caustics_by_light_tracing = false)
-        : Integrator(scene), max_depth_(max_depth), caustics_by_light_tracing_(caustics_by_light_tracing) {}
+        : Integrator(scene), max_depth_(max_depth), caustics_by_light_tracing_(caustics_by_light_tracing) {
+        for (const auto& l : scene.lights) point_lights_ = point_lights_ || l->position().has_value();
+    }
     Radiance3 estimate(const Ray& camera_ray, ThreadContext& tc) const override;
 
     // Whether the scene has media at all: without, "volpath" renders with the surface path tracer.
@@ -48,6 +50,15 @@ public:
     };
     // Where next-event estimation starts: a surface point with its BSDF, or a point in a medium with its
     // phase function (then `hit` and `bsdf` are null).
+    // A stretch of the path's ray through a homogeneous medium, from its origin o (unit direction d) to
+    // t_end, with the rescaled density r_u at o: single scattering towards a point or spot light is sampled
+    // there both by the free-flight distance and equiangularly (medium/equiangular.h), weighed by MIS.
+    struct Segment {
+        Point3f o;
+        Vector3f d;
+        float t_end = 0;
+        SampledSpectrum r_u0;
+    };
     struct Vertex {
         const SurfaceHit* hit = nullptr;
         const BSDF* bsdf = nullptr;
@@ -55,14 +66,24 @@ public:
         const Medium* medium = nullptr; // the medium around a medium vertex
         Vector3f travel;                // the incoming direction of travel (medium vertex)
         HenyeyGreenstein phase;
+        // A medium vertex on a homogeneous segment: the segment, the distance along it and the free-flight
+        // density σ_s T of scattering there, per channel.
+        const Segment* segment = nullptr;
+        float t = 0;
+        SampledSpectrum p_free_flight;
     };
 
 private:
     // Next-event estimation: one light picked by power, its contribution weighed by spectral MIS.
     SampledSpectrum sample_light(const Vertex& v, PathState& path, ThreadContext& tc) const;
+    // Single scattering towards a point or spot light on a homogeneous segment, at an equiangularly sampled
+    // distance; beta and r_u are the path's at the segment's origin.
+    SampledSpectrum sample_equiangular(const Segment& seg, const Medium& medium, SampledSpectrum beta,
+                                       PathState& path, ThreadContext& tc) const;
 
     int max_depth_;
     bool caustics_by_light_tracing_;
+    bool point_lights_ = false; // whether the scene has point or spot lights (equiangular sampling)
 };
 
 } // namespace illum
