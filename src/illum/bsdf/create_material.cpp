@@ -312,13 +312,22 @@ private:
             AlbedoEstimate a = directional_albedo(*bxdf, {0, 0, 1}, spec.delta, 16, 4096, 1);
             albedo = Color3(float(a.mc[0]), float(a.mc[1]), float(a.mc[2]));
         }
-        if (!textured)
-            return own(std::make_unique<SharedBxDFMaterial>(
+        // A delta lobe at the defaults, or possibly where textures vary the parameters (a roughness of 0);
+        // the Lambertian and Oren-Nayar models have none at any parameters.
+        const bool specular = has_flag(bxdf->flags(), kSpecular) ||
+                              (textured && spec.name != "lambert" && spec.name != "oren-nayar");
+        std::unique_ptr<Material> made;
+        if (!textured) {
+            made = std::make_unique<SharedBxDFMaterial>(
                 std::move(bxdf), albedo,
-                spec.factory.textured ? spec.factory.textured(values, albedo, spec.normal_albedo) : nullptr));
-        if (!spec.factory.textured)
-            throw Error(m_.loc, fmt::format("material \"{}\" cannot have textured parameters", spec.name));
-        return own(spec.factory.textured(std::move(values), albedo, spec.normal_albedo));
+                spec.factory.textured ? spec.factory.textured(values, albedo, spec.normal_albedo) : nullptr);
+        } else {
+            if (!spec.factory.textured)
+                throw Error(m_.loc, fmt::format("material \"{}\" cannot have textured parameters", spec.name));
+            made = spec.factory.textured(std::move(values), albedo, spec.normal_albedo);
+        }
+        made->may_be_specular = specular;
+        return own(std::move(made));
     }
 
     const EntityDesc& m_;

@@ -27,11 +27,17 @@ public:
     // The participating medium the material's surface encloses (pbrt-v4's "subsurface": scattering inside
     // the shape), or none. The scene makes it the inside of the shape's MediumInterface.
     virtual const Medium* interior() const { return nullptr; }
+
+    // Whether the material may scatter by a delta lobe (a mirror, smooth glass): false only where that is
+    // known not to happen, so a scene without such materials has no caustics to trace from the lights.
+    bool may_be_specular = true;
 };
 
 class DiffuseMaterial final : public Material {
 public:
-    explicit DiffuseMaterial(const ColorTexture* reflectance) : reflectance_(reflectance) {}
+    explicit DiffuseMaterial(const ColorTexture* reflectance) : reflectance_(reflectance) {
+        may_be_specular = false;
+    }
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
         SampledSpectrum r = reflectance_->albedo(hit, lambda);
         return BSDF(arena.make<LambertBxDF>(r), hit.shading_frame());

@@ -226,6 +226,7 @@ public:
     BSDF bsdf(const SurfaceHit&, SampledWavelengths&, ScratchArena&) const override { return BSDF(); }
     Color3 albedo(const SurfaceHit&) const override { return Color3(0.0f); }
     bool is_interface() const override { return true; }
+    InterfaceMaterial() { may_be_specular = false; }
 };
 
 // pbrt-v4 "mix": one of two materials, chosen per hit: the second where amount > u, with u a hash of the

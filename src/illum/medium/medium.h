@@ -33,4 +33,21 @@ public:
                                         const SampledWavelengths& lambda) const = 0;
 };
 
+// A homogeneous medium's properties at a path's wavelengths, evaluated once for the path (they are the same
+// everywhere, and the wavelengths do not change along a path).
+class HomogeneousCache {
+public:
+    const MediumProperties& get(const Medium& m, const SampledWavelengths& lambda) {
+        if (&m != medium_) {
+            props_ = m.sample_point(Point3f(), lambda);
+            medium_ = &m;
+        }
+        return props_;
+    }
+
+private:
+    const Medium* medium_ = nullptr;
+    MediumProperties props_;
+};
+
 } // namespace illum

@@ -8,20 +8,32 @@
 
 #include <cfloat>
 #include <cmath>
+#include <utility>
 
 #include "illum/math/rng.h"
 #include "illum/medium/medium.h"
 
 namespace illum {
 
+// `cache` (optional) holds a homogeneous medium's properties for the path.
 template <class Callback>
 SampledSpectrum sample_t_maj(Ray ray, float tmax, float u, PCG32& rng, const SampledWavelengths& lambda,
-                             int channel, Callback&& callback) {
+                             int channel, HomogeneousCache* cache, Callback&& callback) {
     // Work in a unit-length parameter so that σ_maj Δt is optical depth.
     float len = length(ray.d);
     tmax *= len;
     ray.d = ray.d / len;
-    MajorantIterator it = ray.medium->sample_ray(ray, tmax, lambda);
+    // A homogeneous medium's properties are the same at every collision: evaluated once, its σ_t the
+    // majorant.
+    const bool homogeneous = ray.medium->is_homogeneous();
+    MediumProperties uniform;
+    MajorantIterator it;
+    if (homogeneous) {
+        uniform = cache ? cache->get(*ray.medium, lambda) : ray.medium->sample_point(ray.o, lambda);
+        it = MajorantIterator::single(0, tmax, uniform.sigma_a + uniform.sigma_s);
+    } else {
+        it = ray.medium->sample_ray(ray, tmax, lambda);
+    }
     SampledSpectrum t_maj(1.0f);
     while (std::optional<MajorantSegment> seg = it.next()) {
         const SampledSpectrum& sigma_maj = seg->sigma_maj;
@@ -42,12 +54,18 @@ SampledSpectrum sample_t_maj(Ray ray, float tmax, float u, PCG32& rng, const Sam
             t += step;
             t_maj *= exp(-sigma_maj * step);
             Point3f p = ray(t);
-            if (!callback(p, ray.medium->sample_point(p, lambda), sigma_maj, t_maj))
+            if (!callback(p, homogeneous ? uniform : ray.medium->sample_point(p, lambda), sigma_maj, t_maj))
                 return SampledSpectrum(1.0f);
             t_maj = SampledSpectrum(1.0f);
         }
     }
     return t_maj;
+}
+
+template <class Callback>
+SampledSpectrum sample_t_maj(Ray ray, float tmax, float u, PCG32& rng, const SampledWavelengths& lambda,
+                             int channel, Callback&& callback) {
+    return sample_t_maj(ray, tmax, u, rng, lambda, channel, nullptr, std::forward<Callback>(callback));
 }
 
 } // namespace illum

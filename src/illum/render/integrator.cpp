@@ -1,5 +1,7 @@
 #include "illum/render/integrator.h"
 
+#include <algorithm>
+
 #include "illum/light/light.h"
 #include "illum/render/aov_integrator.h"
 #include "illum/render/direct_integrator.h"
@@ -33,8 +35,12 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene
     if (name == "volpath") {
         // Without media volpath's transport is the path tracer's, which is faster on surfaces alone.
         if (!VolPathIntegrator::needed(scene)) return std::make_unique<PathIntegrator>(scene, max_depth);
-        // Caustics by light tracing where the camera has an importance function to connect to.
-        if (scene.camera && scene.camera->has_importance())
+        // Caustics by light tracing where the camera has an importance function to connect to and some
+        // material may scatter specularly (else there are no caustics; a light seen directly is the camera
+        // rays' alone then).
+        bool specular = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                    [](const std::unique_ptr<Material>& m) { return m->may_be_specular; });
+        if (specular && scene.camera && scene.camera->has_importance())
             return std::make_unique<VolPathCausticsIntegrator>(scene, max_depth);
         return std::make_unique<VolPathIntegrator>(scene, max_depth);
     }

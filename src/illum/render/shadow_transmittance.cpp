@@ -23,7 +23,7 @@ constexpr int kMaxCrossings = 256;
 
 SampledSpectrum shadow_transmittance(const Scene& scene, Ray ray, const ShadowTarget& target, int ch,
                                      PCG32& rng, const SampledWavelengths& lambda, SampledSpectrum* r_u,
-                                     SampledSpectrum* r_l, std::uint64_t* rays) {
+                                     SampledSpectrum* r_l, std::uint64_t* rays, HomogeneousCache* cache) {
     SampledSpectrum t_ray(1.0f);
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         SurfaceHit hit;
@@ -34,14 +34,15 @@ SampledSpectrum shadow_transmittance(const Scene& scene, Ray ray, const ShadowTa
             float tmax = found ? hit.t : ray.tmax;
             if (ray.medium->is_homogeneous()) {
                 // Exact: T = exp(-σ_t d); the unidirectional technique would have passed with density T.
-                MediumProperties mp = ray.medium->sample_point(ray.o, lambda);
+                const MediumProperties mp =
+                    cache ? cache->get(*ray.medium, lambda) : ray.medium->sample_point(ray.o, lambda);
                 float d = std::min(tmax, 3.0e38f / std::max(length(ray.d), 1e-30f)) * length(ray.d);
                 SampledSpectrum t = exp(-(mp.sigma_a + mp.sigma_s) * d);
                 t_ray *= t;
                 *r_u *= t;
             } else {
                 SampledSpectrum t_maj = sample_t_maj(
-                    ray, tmax, rng.uniform_float(), rng, lambda, ch,
+                    ray, tmax, rng.uniform_float(), rng, lambda, ch, cache,
                     [&](Point3f, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
                         // Ratio tracking: each tentative collision weighs by σ_n / σ_maj (PBR 4th ed.
                         // §14.2.2).

@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "illum/math/rng.h"
+#include "illum/medium/medium.h"
 #include "illum/radiometry/sampled_wavelengths.h"
 #include "illum/render/scene.h"
 
@@ -31,7 +32,8 @@ struct ShadowTarget {
 // infinite). Counts the rays it traces in *rays.
 SampledSpectrum shadow_transmittance(const Scene& scene, Ray ray, const ShadowTarget& target, int channel,
                                      PCG32& rng, const SampledWavelengths& lambda, SampledSpectrum* r_u,
-                                     SampledSpectrum* r_l, std::uint64_t* rays);
+                                     SampledSpectrum* r_l, std::uint64_t* rays,
+                                     HomogeneousCache* cache = nullptr);
 
 // The majorant transmittance over the sampling channel's (the density with which a walk passed a segment
 // without a collision in that channel); zero where the channel's is zero.

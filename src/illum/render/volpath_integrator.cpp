@@ -4,8 +4,8 @@
 
 #include "illum/bsdf/material.h"
 #include "illum/light/light.h"
-#include "illum/medium/medium.h"
 #include "illum/medium/equiangular.h"
+#include "illum/medium/medium.h"
 #include "illum/medium/sample_majorant.h"
 #include "illum/render/direct_view_mis.h"
 #include "illum/render/shadow_transmittance.h"
@@ -74,7 +74,7 @@ SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path
     SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
     ShadowTarget target{ls->p_light, ls->p_light_error, ls->n_light, ls->at_infinity, ls->wi};
     SampledSpectrum t_ray = shadow_transmittance(scene_, shadow, target, path.channel, path.rng, tc.lambda,
-                                                 &r_u_t, &r_l_t, &tc.rays);
+                                                 &r_u_t, &r_l_t, &tc.rays, &path.media);
     if (t_ray.is_black()) return {};
 
     // Contribution β f T L / avg(r_l + r_u) with r_l = r_p r_l,t p_light and r_u = r_p r_u,t p_scatter,
@@ -84,8 +84,7 @@ SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path
         // This scattering point could also have come from equiangular sampling towards the light: the
         // balance heuristic over free flight (density σ_s T per channel) and it (p_eq), in terms of the
         // path's densities at the segment's origin: r_u0 (p_ff + p_eq) / p_ff[channel].
-        std::optional<Equiangular> eq = Equiangular::make(v.segment->o, v.segment->d, 0, v.segment->t_end,
-                                                          *light->position());
+        const Equiangular* eq = v.segment->towards(*light);
         float p_eq = eq ? eq->pdf(v.t) : 0.0f;
         r_l += r_l_t * v.segment->r_u0 * (p_eq / v.p_free_flight[path.channel]);
     }
@@ -96,24 +95,24 @@ SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path
     return path.beta * f_hat * t_ray * ls->biradiance.s / (pmf * denom);
 }
 
-SampledSpectrum VolPathIntegrator::sample_equiangular(const Segment& seg, const Medium& medium,
-                                                     SampledSpectrum beta, PathState& path,
-                                                     ThreadContext& tc) const {
+SampledSpectrum VolPathIntegrator::sample_equiangular(Segment& seg, const Medium& medium,
+                                                      SampledSpectrum beta, PathState& path,
+                                                      ThreadContext& tc) const {
     Sampler& sampler = tc.sampler;
     float u_light = sampler.get_1d(), u_t = sampler.get_1d();
     Point2f u_li = sampler.get_2d();
     float pmf = 0;
     const Light* light = scene_.light_sampler.sample(u_light, &pmf);
     if (!light || pmf <= 0) return {};
-    std::optional<Point3f> c = light->position();
-    if (!c) return {}; // free flight alone samples the other lights' single scattering
-    std::optional<Equiangular> eq = Equiangular::make(seg.o, seg.d, 0, seg.t_end, *c);
+    if (!light->position()) return {}; // free flight alone samples the other lights' single scattering
+    const Equiangular* eq = seg.towards(*light);
     if (!eq) return {};
     float p_eq = 0;
     float t = eq->sample(u_t, &p_eq);
     if (!(p_eq > 0)) return {};
     Point3f x = seg.o + seg.d * t;
-    MediumProperties mp = medium.sample_point(x, tc.lambda);
+    const MediumProperties mp =
+        path.media.get(medium, tc.lambda); // a copy: the shadow ray may refill the cache
     if (mp.sigma_s.is_black()) return {};
     std::optional<LightLiSample> ls = light->sample_li(LightSampleContext(x, {}, {}), u_li, tc.lambda);
     if (!ls || ls->biradiance.s.is_black()) return {};
@@ -124,7 +123,7 @@ SampledSpectrum VolPathIntegrator::sample_equiangular(const Segment& seg, const 
     SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
     ShadowTarget target{ls->p_light, ls->p_light_error, ls->n_light, false, ls->wi};
     SampledSpectrum t_ray = shadow_transmittance(scene_, shadow, target, path.channel, path.rng, tc.lambda,
-                                                 &r_u_t, &r_l_t, &tc.rays);
+                                                 &r_u_t, &r_l_t, &tc.rays, &path.media);
     if (t_ray.is_black()) return {};
     // The balance heuristic with free flight (sample_light): F / avg(r_u0 r_l,t (p_ff + p_eq)).
     float denom = (seg.r_u0 * r_l_t * (p_free_flight + SampledSpectrum(p_eq))).average();
@@ -184,11 +183,14 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
                 point_lights_ && medium->is_homogeneous() && (max_depth_ < 0 || depth < max_depth_);
             if (equiangular) {
                 float len = length(ray.d);
-                seg = Segment{ray.o, ray.d / len, found ? hit.t * len : kInfinity, r_u};
+                seg.o = ray.o;
+                seg.d = ray.d / len;
+                seg.t_end = found ? hit.t * len : kInfinity;
+                seg.r_u0 = r_u;
                 l += sample_equiangular(seg, *medium, beta, path, tc);
             }
             SampledSpectrum t_maj = sample_t_maj(
-                ray, tmax, sampler.get_1d(), path.rng, tc.lambda, ch,
+                ray, tmax, sampler.get_1d(), path.rng, tc.lambda, ch, &path.media,
                 [&](Point3f p, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
                     // The medium's emission σ_a Le, collected at every tentative collision.
                     if ((max_depth_ < 0 || depth < max_depth_) && !mp.le.is_black()) {

@@ -20,6 +20,7 @@
 #include "illum/bsdf/bxdf.h"
 #include "illum/light/light.h"
 #include "illum/math/rng.h"
+#include "illum/medium/equiangular.h"
 #include "illum/medium/henyey_greenstein.h"
 #include "illum/render/integrator.h"
 
@@ -47,6 +48,7 @@ public:
         SampledSpectrum beta{1.0f}, r_u{1.0f}, r_l{1.0f};
         int channel = 0;
         PCG32 rng;
+        HomogeneousCache media;
     };
     // Where next-event estimation starts: a surface point with its BSDF, or a point in a medium with its
     // phase function (then `hit` and `bsdf` are null).
@@ -58,6 +60,17 @@ public:
         Vector3f d;
         float t_end = 0;
         SampledSpectrum r_u0;
+        // The equiangular distribution towards the light that sample_equiangular chose (reused by the
+        // free-flight side's weight when next-event estimation picks the same light).
+        const Light* light = nullptr;
+        std::optional<Equiangular> eq;
+        const Equiangular* towards(const Light& l) {
+            if (&l != light) {
+                light = &l;
+                eq = Equiangular::make(o, d, 0, t_end, *l.position());
+            }
+            return eq ? &*eq : nullptr;
+        }
     };
     struct Vertex {
         const SurfaceHit* hit = nullptr;
@@ -68,7 +81,7 @@ public:
         HenyeyGreenstein phase;
         // A medium vertex on a homogeneous segment: the segment, the distance along it and the free-flight
         // density σ_s T of scattering there, per channel.
-        const Segment* segment = nullptr;
+        Segment* segment = nullptr;
         float t = 0;
         SampledSpectrum p_free_flight;
     };
@@ -78,7 +91,7 @@ private:
     SampledSpectrum sample_light(const Vertex& v, PathState& path, ThreadContext& tc) const;
     // Single scattering towards a point or spot light on a homogeneous segment, at an equiangularly sampled
     // distance; beta and r_u are the path's at the segment's origin.
-    SampledSpectrum sample_equiangular(const Segment& seg, const Medium& medium, SampledSpectrum beta,
+    SampledSpectrum sample_equiangular(Segment& seg, const Medium& medium, SampledSpectrum beta,
                                        PathState& path, ThreadContext& tc) const;
 
     int max_depth_;
