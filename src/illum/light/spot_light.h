@@ -33,7 +33,9 @@ public:
         return t * t * (3 - 2 * t);
     }
     Intensity3 intensity(Vector3f w_world, const SampledWavelengths& lambda) const {
-        return Intensity3(intensity_.at(lambda)) * falloff(dot(w_world, frame_.n));
+        float f = falloff(dot(w_world, frame_.n));
+        if (f == 0) return {}; // outside the cone: the spectrum is not looked up
+        return Intensity3(intensity_.at(lambda)) * f;
     }
 
     std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f,
