@@ -61,6 +61,11 @@ public:
         Intensity3 i = intensity(w, lambda);
         return LightLeSample{Ray{position_, w}, {}, {}, AreaPdf(1), pdf_dir, i / pdf_dir};
     }
+    void pdf_le(const Ray& ray, Normal3f, AreaPdf* pos, SolidAnglePdf* dir) const override {
+        *pos = AreaPdf(1);
+        float cos_theta = dot(ray.d, frame_.n) / length(ray.d);
+        *dir = SolidAnglePdf(cos_theta >= cos_end_ ? uniform_cone_pdf(cos_end_) : 0.0f);
+    }
     Point3f position() const { return position_; }
     Vector3f axis() const { return frame_.n; }
     float cos_start() const { return cos_start_; }
