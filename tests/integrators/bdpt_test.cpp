@@ -61,11 +61,15 @@ void expect_agree(const Image& a, const Image& b, const std::string& what) {
     }
 }
 
-// Closed furnace truncated at maxdepth D: every pixel sees Le Σ_{k<=D} ρ^k.
+// Closed furnace (box filter) truncated at maxdepth D: every pixel sees Le Σ_{k<=D} ρ^k.
 TEST(BDPT, ClosedFurnace) {
     const double rho = 0.7, le = 0.5;
     const int depth = 8;
-    RenderResult r = render_pbrt(test::closed_furnace(rho, le, 16), bdpt(8, depth));
+    // A box filter: with a wider one the border pixels of the light-tracing strategy (t = 1) miss the splats
+    // that would land outside the film, a deficit of ~1e-3 here (pbrt-v4's splats behave alike).
+    std::string scene = test::closed_furnace(rho, le, 16);
+    scene.insert(scene.find("WorldBegin"), "PixelFilter \"box\"\n");
+    RenderResult r = render_pbrt(scene, bdpt(8, depth));
     double e = le * (1 - std::pow(rho, depth + 1)) / (1 - rho);
     const double expected[3] = {e, e, e};
     expect_channels(r, expected, "closed furnace, depth 8");
@@ -77,6 +81,7 @@ LookAt 0 0 5  0 0 0  0 1 0
 Camera "perspective" "float fov" [20]
 Film "rgb" "integer xresolution" [16] "integer yresolution" [16]
 Sampler "independent"
+PixelFilter "box"
 Integrator "bdpt" "integer maxdepth" [-1]
 WorldBegin
 {}
@@ -115,6 +120,7 @@ LookAt 0 0 5  0 0 0  0 1 0
 Camera "perspective" "float fov" [18]
 Film "rgb" "integer xresolution" [16] "integer yresolution" [16]
 Sampler "independent"
+PixelFilter "box"
 Integrator "bdpt" "integer maxdepth" [-1]
 WorldBegin
 LightSource "infinite" "rgb L" [0.5 0.5 0.5]
@@ -141,10 +147,10 @@ Sampler "independent"
 Integrator "path" "integer maxdepth" [5]
 WorldBegin
 AttributeBegin
-  AreaLightSource "diffuse" "rgb L" [40 30 20]
+  AreaLightSource "diffuse" "rgb L" [8 6 4]
   Translate 0.3 0.2 2.5
   ReverseOrientation
-  Shape "disk" "float radius" [0.15]
+  Shape "disk" "float radius" [0.4]
 AttributeEnd
 Material "diffuse" "rgb reflectance" [0.6 0.6 0.6]
 Shape "trianglemesh" "point3 P" [-5 -5 0 5 -5 0 5 5 0 -5 5 0] "integer indices" [0 1 2 0 2 3]

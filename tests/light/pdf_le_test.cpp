@@ -91,7 +91,8 @@ TEST(PdfLe, ImageEnvironment) {
                 auto d = env_direction(layout, {(x + 0.5f) / w, (y + 0.5f) / h});
                 if (!d) continue;
                 float sky = 0.1f + std::max(0.0f, d->z);
-                img(x, y) = Color3(sky, 0.5f * sky, 2 * sky) + (dot(*d, sun) > 0.95f ? Color3(50.0f) : Color3(0.0f));
+                img(x, y) =
+                    Color3(sky, 0.5f * sky, 2 * sky) + (dot(*d, sun) > 0.95f ? Color3(50.0f) : Color3(0.0f));
             }
         Transform rot = Transform::rotate(30, normalize(Vector3f{1, 2, 3}));
         ImageEnvironmentLight light(EnvironmentMap(std::move(img), layout), rot, 2.0f);

@@ -151,8 +151,8 @@ SampledSpectrum connect(const PathContext& ctx, PathVertex* lv, PathVertex* cv, 
         const PathVertex& qs = lv[s - 1];
         const PathVertex& pt = cv[t - 1];
         if (!qs.is_connectible() || !pt.is_connectible()) return SampledSpectrum(0.0f);
-        l = qs.beta * vertex_f(qs, pt, TransportMode::Importance) * vertex_f(pt, qs, TransportMode::Radiance) *
-            pt.beta;
+        l = qs.beta * vertex_f(qs, pt, TransportMode::Importance) *
+            vertex_f(pt, qs, TransportMode::Radiance) * pt.beta;
         if (!l.is_black()) l *= connect_g(ctx, qs, pt, ch);
     }
     if (l.is_black()) return l;
@@ -176,9 +176,8 @@ SampledSpectrum connect(const PathContext& ctx, PathVertex* lv, PathVertex* cv, 
 BDPTIntegrator::BDPTIntegrator(const Scene& scene, int max_depth)
     : WholeImageIntegrator(scene), max_depth_(max_depth < 0 ? kUnboundedDepth : max_depth) {
     if (!scene.camera || !scene.camera->has_importance())
-        throw Error(
-            "integrator \"bdpt\" needs a perspective camera or an orthographic one without a lens "
-            "(the realistic camera and a thin-lens orthographic one have no importance function)");
+        throw Error("integrator \"bdpt\" needs a perspective camera or an orthographic one without a lens "
+                    "(the realistic camera and a thin-lens orthographic one have no importance function)");
 }
 
 RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
@@ -221,7 +220,8 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
                              : SampledWavelengths::rgb_mode();
         if (dispersive_camera) tc.lambda.terminate_secondary();
         const std::uint32_t pixel = std::uint32_t(y) * std::uint32_t(w) + std::uint32_t(x);
-        std::optional<CameraRay> cr = camera.generate_ray(p_film, u_lens, spectral ? tc.lambda.hero() : kDLineNm);
+        std::optional<CameraRay> cr =
+            camera.generate_ray(p_film, u_lens, spectral ? tc.lambda.hero() : kDLineNm);
         // The free-flight channels of the two subpaths and the generator for tracking steps.
         const int ch_camera = std::min(kSpectrumSamples - 1, int(sampler.get_1d() * kSpectrumSamples));
         const int ch_light = std::min(kSpectrumSamples - 1, int(sampler.get_1d() * kSpectrumSamples));
@@ -248,8 +248,8 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         Ray ray = cr->ray;
         ray.medium = scene_.camera_medium;
         float pdf_dir = camera.pdf_we(ray).dir.value;
-        int n_camera = 1 + walk(ctx, ray, cv[0].beta, pdf_dir, max_depth + 1, TransportMode::Radiance, ch_camera,
-                                cv + 1);
+        int n_camera = 1 + walk(ctx, ray, cv[0].beta, pdf_dir, max_depth + 1, TransportMode::Radiance,
+                                ch_camera, cv + 1);
 
         // The light subpath.
         int n_light = 0;

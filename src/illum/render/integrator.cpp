@@ -25,7 +25,7 @@ bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, Thre
 // Adding an integrator: its file, and one line here and in integrator_names().
 const std::vector<std::string>& integrator_names() {
     static const std::vector<std::string> names = {"path",   "volpath",   "direct", "albedo",
-                                                   "normal", "lightpath", "sppm", "bdpt"};
+                                                   "normal", "lightpath", "sppm",   "bdpt"};
     return names;
 }
 

@@ -96,7 +96,8 @@ float pdf_light_origin(const PathContext& ctx, const PathVertex& v, const PathVe
     return ctx.scene.light_sampler.pmf(light) * pos.value;
 }
 
-float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* prev, const PathVertex& next) {
+float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* prev,
+                 const PathVertex& next) {
     if (v.type == VertexType::Light) return pdf_light(ctx, v, next);
     Vector3f wn = next.p - v.p;
     float dn = length_squared(wn);
@@ -183,7 +184,8 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
                 ray, found ? hit.t : kInfinity, sampler.get_1d(), ctx.rng, tc.lambda, ch,
                 [&](Point3f p, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
                     float u = ctx.rng.uniform_float();
-                    float p_absorb = mp.sigma_a[ch] / sigma_maj[ch], p_scatter = mp.sigma_s[ch] / sigma_maj[ch];
+                    float p_absorb = mp.sigma_a[ch] / sigma_maj[ch],
+                          p_scatter = mp.sigma_s[ch] / sigma_maj[ch];
                     if (u < p_absorb) {
                         terminated = true;
                         return false;
@@ -319,8 +321,8 @@ SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVerte
         }
     }
     SampledSpectrum r_u(1.0f), r_l(1.0f);
-    SampledSpectrum t = shadow_transmittance(ctx.scene, ray, target, ch, ctx.rng, ctx.tc.lambda, &r_u, &r_l,
-                                             &ctx.tc.rays);
+    SampledSpectrum t =
+        shadow_transmittance(ctx.scene, ray, target, ch, ctx.rng, ctx.tc.lambda, &r_u, &r_l, &ctx.tc.rays);
     if (t.is_black()) return t;
     // One-sample spectral MIS over the tracking channel (pbrt-v4's Integrator::Tr): T / avg(r_l).
     float avg = r_l.average();

@@ -39,16 +39,18 @@ struct PathVertex {
     float pdf_fwd = 0, pdf_rev = 0;
     Point3f p;
     Vector3f p_error;
-    Normal3f ng, ns;                 // geometric and shading normals; zero off surfaces (and for the camera)
-    Vector3f wo;                     // surface / medium: unit direction towards the previous vertex
-    const Medium* medium = nullptr;  // medium vertex: its medium; camera / point light: where it sits
-    HenyeyGreenstein phase;          // medium vertex
-    const Light* light = nullptr;    // light vertex (nullptr: an escaped ray, every infinite light)
-    SurfaceHit hit;                  // surface vertex
-    BSDF bsdf;                       // surface vertex (in the thread's arena)
+    Normal3f ng, ns;                // geometric and shading normals; zero off surfaces (and for the camera)
+    Vector3f wo;                    // surface / medium: unit direction towards the previous vertex
+    const Medium* medium = nullptr; // medium vertex: its medium; camera / point light: where it sits
+    HenyeyGreenstein phase;         // medium vertex
+    const Light* light = nullptr;   // light vertex (nullptr: an escaped ray, every infinite light)
+    SurfaceHit hit;                 // surface vertex
+    BSDF bsdf;                      // surface vertex (in the thread's arena)
 
     bool on_surface() const { return ng != Normal3f{}; }
-    bool is_light() const { return type == VertexType::Light || (type == VertexType::Surface && hit.area_light); }
+    bool is_light() const {
+        return type == VertexType::Light || (type == VertexType::Surface && hit.area_light);
+    }
     bool is_delta_light() const { return type == VertexType::Light && light && is_delta(light->type()); }
     // A vertex at infinity: an environment or directional light (its p only gives a direction).
     bool is_infinite_light() const {
@@ -75,7 +77,7 @@ struct PathVertex {
 struct PathContext {
     const Scene& scene;
     ThreadContext& tc;
-    PCG32& rng;        // free-flight and ratio-tracking steps beyond the sampler's first
+    PCG32& rng;         // free-flight and ratio-tracking steps beyond the sampler's first
     float scene_radius; // of the bounding sphere: infinite lights emit from its disk
 };
 
