@@ -76,4 +76,13 @@ std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2,
     return LightLeSample{Ray{o, w}, ss.n, l, pdf_pos, pdf_dir, l * cos_theta / pdf_pos / pdf_dir};
 }
 
+void DiffuseAreaLight::pdf_le(const Ray& ray, Normal3f n, AreaPdf* pos, SolidAnglePdf* dir) const {
+    *pos = AreaPdf(1 / shape_->area());
+    float cos_theta = dot(Vector3f(n), ray.d) / length(ray.d);
+    if (two_sided_)
+        *dir = SolidAnglePdf(cosine_hemisphere_pdf(std::abs(cos_theta)) * 0.5f);
+    else
+        *dir = SolidAnglePdf(cos_theta > 0 ? cosine_hemisphere_pdf(cos_theta) : 0.0f);
+}
+
 } // namespace illum

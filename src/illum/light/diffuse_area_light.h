@@ -32,6 +32,8 @@ public:
     // probability 1/2 when two-sided): flux = L cos θ / (p_A · cos θ / π) = π L / p_A (× 2 two-sided).
     std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
                                            const SampledWavelengths& lambda) const override;
+    // 1 / A and the cosine-weighted density about n (halved and on either side when two-sided).
+    void pdf_le(const Ray& ray, Normal3f n, AreaPdf* pos, SolidAnglePdf* dir) const override;
 
     Radiance3 emitted(Normal3f n, Vector3f w, const SampledWavelengths& lambda) const {
         if (!two_sided_ && dot(n, w) <= 0) return {};

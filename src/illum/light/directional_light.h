@@ -40,6 +40,11 @@ public:
         AreaPdf pdf_pos(1 / (kPi * radius_ * radius_));
         return LightLeSample{Ray{o, -w_}, {}, {}, pdf_pos, SolidAnglePdf(1), irradiance(lambda) / pdf_pos};
     }
+    // The direction is a delta: probability 1 for a ray along -w (to float rounding), 0 otherwise.
+    void pdf_le(const Ray& ray, Normal3f, AreaPdf* pos, SolidAnglePdf* dir) const override {
+        *pos = disk_emission_pdf(radius_);
+        *dir = SolidAnglePdf(dot(ray.d, -w_) > (1 - 1e-5f) * length(ray.d) ? 1.0f : 0.0f);
+    }
     Vector3f direction() const { return w_; }
     Irradiance3 irradiance(const SampledWavelengths& lambda) const { return Irradiance3(e_.at(lambda)); }
 

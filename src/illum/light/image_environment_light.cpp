@@ -126,4 +126,11 @@ std::optional<LightLeSample> ImageEnvironmentLight::sample_le(Point2f u1, Point2
     return disk_emission(scene_center_, scene_radius_, wi, u1, l, SolidAnglePdf(pdf_uv / j));
 }
 
+void ImageEnvironmentLight::pdf_le(const Ray& ray, Normal3f, AreaPdf* pos, SolidAnglePdf* dir) const {
+    *pos = disk_emission_pdf(scene_radius_);
+    Vector3f d = light_from_world_(-ray.d);
+    float len = length(d);
+    *dir = SolidAnglePdf(len > 0 ? pdf_light_space(d / len) : 0.0f);
+}
+
 } // namespace illum

@@ -43,6 +43,8 @@ public:
     Power3 power() const override;
     std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
                                            const SampledWavelengths& lambda) const override;
+    // The map's distribution at the direction the photon comes from (-ray.d), whatever the sampling mode.
+    void pdf_le(const Ray& ray, Normal3f n, AreaPdf* pos, SolidAnglePdf* dir) const override;
 
     // Radiance arriving from world direction w (towards the environment). Light::radiance (emission from
     // a surface point) stays visible beside it.

@@ -91,6 +91,13 @@ public:
     // light emits nothing there. Infinite and directional lights need preprocess() first.
     virtual std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
                                                    const SampledWavelengths& lambda) const = 0;
+    // The densities with which sample_le() would emit `ray` (origin on the light, unit direction of
+    // travel; n: the emitter's normal at the origin, zero for points and infinite lights), in sample_le's
+    // conventions: *pos per unit area (1 as a probability for a delta position; for infinite and
+    // directional lights the disk density 1 / (π r²), whatever the origin), *dir per steradian (1 as a
+    // probability for a delta direction that the ray follows, 0 for any other). Bidirectional methods
+    // weigh their strategies with it (PBR 4th ed. §16.3, Light::PDF_Le; Veach 1997 §10.2).
+    virtual void pdf_le(const Ray& ray, Normal3f n, AreaPdf* pos, SolidAnglePdf* dir) const = 0;
 
     // Position in the scene's light list, set by the scene (for selection pmfs).
     std::uint32_t index = 0;
@@ -112,5 +119,7 @@ private:
 // origin is uniform on the disk of radius r centred at c + r wi, facing -wi, so it covers the scene's
 // bounding sphere (centre c, radius r). p_pos = 1 / (π r²); the direction is perpendicular to the disk.
 LightLeSample disk_emission(Point3f c, float r, Vector3f wi, Point2f u, Radiance3 l, SolidAnglePdf pdf_dir);
+// disk_emission's position density, 1 / (π r²) (0 before the scene's radius is known).
+inline AreaPdf disk_emission_pdf(float r) { return r > 0 ? AreaPdf(1 / (kPi * r * r)) : AreaPdf(0); }
 
 } // namespace illum

@@ -43,6 +43,10 @@ public:
                              pdf_dir,
                              intensity(lambda) / pdf_dir};
     }
+    void pdf_le(const Ray&, Normal3f, AreaPdf* pos, SolidAnglePdf* dir) const override {
+        *pos = AreaPdf(1);
+        *dir = SolidAnglePdf(uniform_sphere_pdf());
+    }
     Intensity3 intensity(const SampledWavelengths& lambda) const { return Intensity3(intensity_.at(lambda)); }
 
 private:

@@ -64,6 +64,11 @@ public:
         Intensity3 i = intensity(w, lambda);
         return LightLeSample{Ray{position_, w}, {}, {}, AreaPdf(1), pdf_dir, i / pdf_dir};
     }
+    void pdf_le(const Ray& ray, Normal3f, AreaPdf* pos, SolidAnglePdf* dir) const override {
+        *pos = AreaPdf(1);
+        float cos_theta = dot(ray.d, frame_.n) / length(ray.d);
+        *dir = SolidAnglePdf(cos_theta >= cos_end_ ? uniform_cone_pdf(cos_end_) : 0.0f);
+    }
     Vector3f axis() const { return frame_.n; }
     float cos_start() const { return cos_start_; }
     float cos_end() const { return cos_end_; }

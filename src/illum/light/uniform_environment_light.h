@@ -44,6 +44,11 @@ public:
         return emit_from_disk(wi, u1, Radiance3(radiance_.at(lambda)), pdf_dir);
     }
 
+    void pdf_le(const Ray&, Normal3f, AreaPdf* pos, SolidAnglePdf* dir) const override {
+        *pos = disk_emission_pdf(scene_radius_);
+        *dir = SolidAnglePdf(uniform_sphere_pdf());
+    }
+
     // The photon for incident direction wi (towards the environment) of radiance l: it starts on the
     // disk of radius r centred at c + r wi, perpendicular to wi, and travels along -wi.
     LightLeSample emit_from_disk(Vector3f wi, Point2f u1, Radiance3 l, SolidAnglePdf pdf_dir) const {

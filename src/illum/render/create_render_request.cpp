@@ -19,8 +19,8 @@ RenderRequest create_render_request(const EntityDesc& in, const EntityDesc& s, D
         r.integrator = "path";
     } else if (t == "directlighting") {
         r.integrator = "direct"; // pbrt-v3's name for it
-    } else if (t == "bdpt" || t == "mlt" || t == "randomwalk" || t == "simplevolpath" ||
-               t == "ambientocclusion" || t == "aov") {
+    } else if (t == "mlt" || t == "randomwalk" || t == "simplevolpath" || t == "ambientocclusion" ||
+               t == "aov") {
         diag.unsupported(in.loc, fmt::format("integrator \"{}\" is rendered with \"path\"", t));
         r.integrator = "path";
         for (const Param& p : in.params.params()) p.used = true; // its own parameters are not ours to judge
@@ -35,6 +35,12 @@ RenderRequest create_render_request(const EntityDesc& in, const EntityDesc& s, D
         if (!(r.sppm_radius > 0)) throw Error(in.loc, "radius must be positive");
         r.sppm_seed = in.params.get_int("seed", 6502);
     }
+    if (r.integrator == "bdpt")
+        for (const char* name : {"visualizestrategies", "visualizeweights"})
+            if (in.params.get_bool(name, false))
+                diag.unsupported(
+                    in.params.find(name)->loc,
+                    fmt::format("\"{}\" is not supported; no per-strategy images are written", name));
     if (in.params.get_bool("regularize", false))
         diag.unsupported(in.params.find("regularize")->loc,
                          "\"regularize\" is not supported; rendered without");

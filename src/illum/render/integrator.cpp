@@ -4,6 +4,7 @@
 
 #include "illum/light/light.h"
 #include "illum/render/aov_integrator.h"
+#include "illum/render/bdpt_integrator.h"
 #include "illum/render/direct_integrator.h"
 #include "illum/render/lightpath_integrator.h"
 #include "illum/render/path_integrator.h"
@@ -26,7 +27,7 @@ bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, Thre
 // Adding an integrator: its file, and one line here and in integrator_names().
 const std::vector<std::string>& integrator_names() {
     static const std::vector<std::string> names = {"path",   "volpath",   "direct", "albedo",
-                                                   "normal", "lightpath", "sppm"};
+                                                   "normal", "lightpath", "sppm",   "bdpt"};
     return names;
 }
 
@@ -48,6 +49,7 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene
     if (name == "albedo") return std::make_unique<AovIntegrator>(scene, AovIntegrator::Pass::Albedo);
     if (name == "normal") return std::make_unique<AovIntegrator>(scene, AovIntegrator::Pass::Normal);
     if (name == "lightpath") return std::make_unique<LightPathIntegrator>(scene, max_depth);
+    if (name == "bdpt") return std::make_unique<BDPTIntegrator>(scene, max_depth);
     if (name == "sppm") {
         const RenderRequest& r = scene.request;
         return std::make_unique<SPPMIntegrator>(
@@ -55,7 +57,7 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene
             SppmSettings{max_depth, r.sppm_photons_per_iteration, r.sppm_radius, std::uint64_t(r.sppm_seed)});
     }
     throw Error("unknown integrator \"" + name +
-                "\" (use path, volpath, direct, albedo, normal, lightpath or sppm)");
+                "\" (use path, volpath, direct, albedo, normal, lightpath, sppm or bdpt)");
 }
 
 } // namespace illum

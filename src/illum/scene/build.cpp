@@ -92,7 +92,8 @@ private:
             scene_->medium_reports.push_back({name, c.info.type, c.info.bytes, {}});
             scene_->media.push_back(std::move(c.medium));
         }
-        if (!desc_.media.empty() && scene_->request.integrator != "volpath")
+        if (!desc_.media.empty() && scene_->request.integrator != "volpath" &&
+            scene_->request.integrator != "bdpt")
             diag_.unsupported(desc_.integrator.loc,
                               fmt::format("integrator \"{}\" renders surfaces only: the scene's media are "
                                           "ignored (use volpath)",

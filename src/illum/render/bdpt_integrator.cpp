@@ -1,0 +1,390 @@
+#include "illum/render/bdpt_integrator.h"
+
+#include <algorithm>
+#include <oneapi/tbb/enumerable_thread_specific.h>
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
+#include <oneapi/tbb/task_group.h>
+#include <thread>
+#include <vector>
+
+#include "illum/camera/film.h"
+#include "illum/camera/splat_film.h"
+#include "illum/render/path_vertex.h"
+#include "illum/util/error.h"
+#include "illum/util/progress.h"
+
+namespace illum {
+
+namespace {
+
+// One camera sample's estimate of its pixel (strategies t >= 2), in the output colour space.
+struct CameraEstimate {
+    std::uint32_t pixel;
+    Color3 value;
+    float weight;
+};
+
+// What one chunk of pixel samples produces, added to the films in chunk order.
+struct ChunkOutput {
+    std::vector<CameraEstimate> estimates;
+    std::vector<Splat> splats;
+    int dropped = 0;
+};
+
+// The subpaths' storage, once per thread: maxdepth + 2 camera and maxdepth + 1 light vertices.
+struct Subpaths {
+    std::vector<PathVertex> camera, light;
+};
+
+float remap0(float f) { return f != 0 ? f : 1.0f; }
+
+// The balance heuristic for strategy (s, t) (Veach 1997 §10.2.1, eq. 10.9): with p_i the density of the
+// path under the strategy with i light vertices, w = p_s / Σ p_i, evaluated as 1 / (1 + Σ_{i≠s} p_i/p_s)
+// where the ratios follow from the vertices' densities: moving the connection one vertex towards the
+// camera multiplies the ratio by pdf_rev / pdf_fwd of the camera vertex passed, and likewise towards the
+// light. The reverse densities at the connection's two ends and their predecessors depend on the
+// strategy; they are set here and restored afterwards.
+float mis_weight(const PathContext& ctx, PathVertex* lv, PathVertex* cv, int s, int t) {
+    if (s + t == 2) return 1;
+    PathVertex* qs = s > 0 ? &lv[s - 1] : nullptr;
+    PathVertex* pt = t > 0 ? &cv[t - 1] : nullptr;
+    PathVertex* qs_m = s > 1 ? &lv[s - 2] : nullptr;
+    PathVertex* pt_m = t > 1 ? &cv[t - 2] : nullptr;
+
+    // The new values, from the vertices as they are (the connection's ends are not delta).
+    float pt_rev = 0, pt_m_rev = 0, qs_rev = 0, qs_m_rev = 0;
+    if (pt) pt_rev = s > 0 ? vertex_pdf(ctx, *qs, qs_m, *pt) : pdf_light_origin(ctx, *pt, *pt_m);
+    if (pt_m) pt_m_rev = s > 0 ? vertex_pdf(ctx, *pt, qs, *pt_m) : pdf_light(ctx, *pt, *pt_m);
+    if (qs) qs_rev = vertex_pdf(ctx, *pt, pt_m, *qs);
+    if (qs_m) qs_m_rev = vertex_pdf(ctx, *qs, pt, *qs_m);
+
+    struct Saved {
+        PathVertex* v;
+        float pdf_rev;
+        bool delta;
+    } saved[4] = {{pt, 0, false}, {pt_m, 0, false}, {qs, 0, false}, {qs_m, 0, false}};
+    for (Saved& sv : saved)
+        if (sv.v) sv.pdf_rev = sv.v->pdf_rev, sv.delta = sv.v->delta;
+    if (pt) pt->pdf_rev = pt_rev, pt->delta = false;
+    if (pt_m) pt_m->pdf_rev = pt_m_rev;
+    if (qs) qs->pdf_rev = qs_rev, qs->delta = false;
+    if (qs_m) qs_m->pdf_rev = qs_m_rev;
+
+    float sum = 0, ri = 1;
+    for (int i = t - 1; i > 0; --i) {
+        ri *= remap0(cv[i].pdf_rev) / remap0(cv[i].pdf_fwd);
+        if (!cv[i].delta && !cv[i - 1].delta) sum += ri;
+    }
+    ri = 1;
+    for (int i = s - 1; i >= 0; --i) {
+        ri *= remap0(lv[i].pdf_rev) / remap0(lv[i].pdf_fwd);
+        bool delta_before = i > 0 ? lv[i - 1].delta : lv[0].is_delta_light();
+        if (!lv[i].delta && !delta_before) sum += ri;
+    }
+
+    for (Saved& sv : saved)
+        if (sv.v) sv.v->pdf_rev = sv.pdf_rev, sv.v->delta = sv.delta;
+    return 1 / (1 + sum);
+}
+
+// The contribution of strategy (s, t), MIS-weighted. t = 1 sets *p_raster (a splat).
+SampledSpectrum connect(const PathContext& ctx, PathVertex* lv, PathVertex* cv, int s, int t, int ch,
+                        bool camera_delta, Point2f* p_raster) {
+    const Scene& scene = ctx.scene;
+    Sampler& sampler = ctx.tc.sampler;
+    // A light vertex at infinity ends the camera subpath; only s = 0 uses it.
+    if (t > 1 && s != 0 && cv[t - 1].type == VertexType::Light) return SampledSpectrum(0.0f);
+
+    SampledSpectrum l(0.0f);
+    PathVertex sampled;
+    bool have_sampled = false;
+    if (s == 0) {
+        const PathVertex& pt = cv[t - 1];
+        if (pt.is_light()) l = vertex_le(ctx, pt, cv[t - 2]) * pt.beta;
+    } else if (t == 1) {
+        const PathVertex& qs = lv[s - 1];
+        if (camera_delta || !qs.is_connectible()) return SampledSpectrum(0.0f);
+        Point2f u = sampler.get_2d();
+        std::optional<CameraWiSample> cs = scene.camera->sample_wi(qs.p, u);
+        if (!cs) return SampledSpectrum(0.0f);
+        *p_raster = cs->p_raster;
+        sampled.type = VertexType::Camera;
+        sampled.p = cs->p_lens;
+        sampled.medium = scene.camera_medium;
+        sampled.beta = SampledSpectrum((cs->we / cs->pdf).value);
+        have_sampled = true;
+        l = qs.beta * vertex_f(qs, sampled, TransportMode::Importance) * sampled.beta;
+        if (qs.on_surface()) l *= std::abs(dot(cs->wi, Vector3f(qs.ns)));
+        if (!l.is_black()) l *= connection_transmittance(ctx, qs, sampled, ch);
+    } else if (s == 1) {
+        const PathVertex& pt = cv[t - 1];
+        if (!pt.is_connectible()) return SampledSpectrum(0.0f);
+        float u_light = sampler.get_1d();
+        Point2f u = sampler.get_2d();
+        float pmf = 0;
+        const Light* light = scene.light_sampler.sample(u_light, &pmf);
+        if (!light || !(pmf > 0)) return SampledSpectrum(0.0f);
+        LightSampleContext lc =
+            pt.type == VertexType::Surface ? LightSampleContext(pt.hit) : LightSampleContext(pt.p, {}, {});
+        std::optional<LightLiSample> ls = light->sample_li(lc, u, ctx.tc.lambda);
+        if (!ls || ls->biradiance.s.is_black() || !(ls->pdf.value > 0)) return SampledSpectrum(0.0f);
+        sampled.type = VertexType::Light;
+        sampled.light = light;
+        sampled.medium = light->medium;
+        if (ls->at_infinity) {
+            sampled.p = pt.p + ls->wi * std::max(2 * ctx.scene_radius, 1.0f);
+        } else {
+            sampled.p = ls->p_light;
+            sampled.p_error = ls->p_light_error;
+            sampled.ng = sampled.ns = ls->n_light;
+        }
+        // The biradiance is L / p_ω (or I / r² for a point): the light's end of the path over its density.
+        sampled.beta = ls->biradiance.s / pmf;
+        sampled.pdf_fwd = pdf_light_origin(ctx, sampled, pt);
+        have_sampled = true;
+        l = pt.beta * vertex_f(pt, sampled, TransportMode::Radiance) * sampled.beta;
+        if (pt.on_surface()) l *= std::abs(dot(ls->wi, Vector3f(pt.ns)));
+        if (!l.is_black()) l *= connection_transmittance(ctx, pt, sampled, ch);
+    } else {
+        const PathVertex& qs = lv[s - 1];
+        const PathVertex& pt = cv[t - 1];
+        if (!qs.is_connectible() || !pt.is_connectible()) return SampledSpectrum(0.0f);
+        l = qs.beta * vertex_f(qs, pt, TransportMode::Importance) *
+            vertex_f(pt, qs, TransportMode::Radiance) * pt.beta;
+        if (!l.is_black()) l *= connect_g(ctx, qs, pt, ch);
+    }
+    if (l.is_black()) return l;
+
+    // The strategy's sampled endpoint stands in for the subpath's own while the weight is computed.
+    float w;
+    if (have_sampled) {
+        PathVertex& slot = s == 1 ? lv[0] : cv[0];
+        PathVertex keep = slot;
+        slot = sampled;
+        w = mis_weight(ctx, lv, cv, s, t);
+        slot = keep;
+    } else {
+        w = mis_weight(ctx, lv, cv, s, t);
+    }
+    return l * w;
+}
+
+} // namespace
+
+BDPTIntegrator::BDPTIntegrator(const Scene& scene, int max_depth)
+    : WholeImageIntegrator(scene), max_depth_(max_depth < 0 ? kUnboundedDepth : max_depth) {
+    if (!scene.camera || !scene.camera->has_importance())
+        throw Error("integrator \"bdpt\" needs a perspective camera or an orthographic one without a lens "
+                    "(the realistic camera and a thin-lens orthographic one have no importance function)");
+}
+
+RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
+    const int w = scene_.width, h = scene_.height;
+    const std::size_t pixels = std::size_t(w) * h;
+    int threads =
+        options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    tbb::task_arena arena(threads);
+
+    auto kind = parse_sampler_kind(options.sampler);
+    if (!kind) throw Error("unknown sampler \"" + options.sampler + "\" (use sobol or independent)");
+    Sampler prototype(*kind, options.spp > 0 ? options.spp : 1, options.seed);
+    tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });
+    tbb::enumerable_thread_specific<Subpaths> storage([&] {
+        Subpaths sp;
+        sp.camera.resize(std::size_t(max_depth_) + 2);
+        sp.light.resize(std::size_t(max_depth_) + 1);
+        return sp;
+    });
+    Film film(w, h);
+    SplatFilm splat_film(w, h, *scene_.filter);
+    const bool spectral = options.spectral;
+    const Camera& camera = *scene_.camera;
+    const bool dispersive_camera = spectral && camera.is_dispersive();
+    const bool camera_delta = dynamic_cast<const OrthographicCamera*>(&camera) != nullptr;
+    Point3f scene_center;
+    float scene_radius = 0;
+    scene_.accelerator.bounds().bounding_sphere(&scene_center, &scene_radius);
+    const int max_depth = max_depth_;
+
+    // One pixel sample: both subpaths, then every strategy.
+    auto trace = [&](ThreadContext& tc, Subpaths& sp, int x, int y, ChunkOutput& out) {
+        Sampler& sampler = tc.sampler;
+        tc.arena.reset();
+        FilterSample fs = scene_.filter->sample(sampler.get_pixel_2d());
+        Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
+        Point2f u_lens = sampler.get_2d();
+        tc.lambda = spectral ? SampledWavelengths::sample_visible(sampler.get_1d(), scene_.color_space)
+                             : SampledWavelengths::rgb_mode();
+        if (dispersive_camera) tc.lambda.terminate_secondary();
+        const std::uint32_t pixel = std::uint32_t(y) * std::uint32_t(w) + std::uint32_t(x);
+        std::optional<CameraRay> cr =
+            camera.generate_ray(p_film, u_lens, spectral ? tc.lambda.hero() : kDLineNm);
+        // The free-flight channels of the two subpaths and the generator for tracking steps.
+        const int ch_camera = std::min(kSpectrumSamples - 1, int(sampler.get_1d() * kSpectrumSamples));
+        const int ch_light = std::min(kSpectrumSamples - 1, int(sampler.get_1d() * kSpectrumSamples));
+        PCG32 rng;
+        {
+            float a = sampler.get_1d(), b = sampler.get_1d();
+            rng.set_sequence(hash(std::uint32_t(a * 0x1p32f), std::uint32_t(b * 0x1p32f)));
+        }
+        if (!cr) {
+            out.estimates.push_back({pixel, Color3(0.0f), fs.weight});
+            return;
+        }
+        PathContext ctx{scene_, tc, rng, scene_radius};
+        PathVertex* cv = sp.camera.data();
+        PathVertex* lv = sp.light.data();
+
+        // The camera subpath.
+        cv[0] = PathVertex{};
+        cv[0].type = VertexType::Camera;
+        cv[0].p = cr->ray.o;
+        cv[0].medium = scene_.camera_medium;
+        cv[0].beta = SampledSpectrum(cr->weight);
+        cv[0].delta = camera_delta;
+        Ray ray = cr->ray;
+        ray.medium = scene_.camera_medium;
+        float pdf_dir = camera.pdf_we(ray).dir.value;
+        int n_camera = 1 + walk(ctx, ray, cv[0].beta, pdf_dir, max_depth + 1, TransportMode::Radiance,
+                                ch_camera, cv + 1);
+
+        // The light subpath.
+        int n_light = 0;
+        {
+            float pmf = 0;
+            float u_light = sampler.get_1d();
+            Point2f u_pos = sampler.get_2d(), u_dir = sampler.get_2d();
+            const Light* light = scene_.light_sampler.sample(u_light, &pmf);
+            std::optional<LightLeSample> les;
+            if (light && pmf > 0) les = light->sample_le(u_pos, u_dir, tc.lambda);
+            if (les && les->pdf_pos.value > 0 && les->pdf_dir.value > 0 && !les->flux.is_black()) {
+                PathVertex& l0 = lv[0];
+                l0 = PathVertex{};
+                l0.type = VertexType::Light;
+                l0.light = light;
+                l0.p = les->ray.o;
+                l0.ng = l0.ns = les->n;
+                l0.medium = light->medium;
+                l0.beta = les->radiance.s;
+                l0.pdf_fwd = pmf * les->pdf_pos.value;
+                Ray lr = les->ray;
+                lr.medium = light->medium_towards(lr.d, les->n);
+                n_light = 1 + walk(ctx, lr, (les->flux / pmf).s, les->pdf_dir.value, max_depth,
+                                   TransportMode::Importance, ch_light, lv + 1);
+                if (l0.is_infinite_light()) {
+                    // The photon's origin is on the scene's disk: the first vertex's forward density is the
+                    // disk's (with the cosine there), the light's is that of the direction.
+                    if (n_light > 1) {
+                        lv[1].pdf_fwd = les->pdf_pos.value;
+                        if (lv[1].on_surface()) lv[1].pdf_fwd *= std::abs(dot(lr.d, Vector3f(lv[1].ng)));
+                    }
+                    l0.pdf_fwd = infinite_light_density(ctx, lr.d);
+                }
+            }
+        }
+
+        SampledSpectrum l(0.0f);
+        for (int t = 1; t <= n_camera; ++t)
+            for (int s = 0; s <= n_light; ++s) {
+                int depth = s + t - 2;
+                if ((s == 1 && t == 1) || depth < 0 || depth > max_depth) continue;
+                Point2f p_raster;
+                SampledSpectrum c = connect(ctx, lv, cv, s, t, ch_camera, camera_delta, &p_raster);
+                if (c.is_black()) continue;
+                if (!c.is_finite() || c.has_negative()) {
+                    ++out.dropped;
+                    continue;
+                }
+                if (t == 1)
+                    out.splats.push_back({p_raster, scene_.sensor.to_rgb(Radiance3(c), tc.lambda)});
+                else
+                    l += c;
+            }
+        out.estimates.push_back({pixel, scene_.sensor.to_rgb(Radiance3(l), tc.lambda), fs.weight});
+    };
+
+    const std::size_t chunks_per_pass = (pixels + kChunkPixels - 1) / kChunkPixels;
+    struct Wave {
+        std::vector<ChunkOutput> outputs = std::vector<ChunkOutput>(kWaveChunks);
+        std::size_t chunks = 0;
+    };
+    Wave waves[2];
+    std::uint64_t nonfinite = 0;
+    auto apply = [&](Wave& wv) {
+        for (std::size_t k = 0; k < wv.chunks; ++k) {
+            const ChunkOutput& o = wv.outputs[k];
+            for (const CameraEstimate& e : o.estimates)
+                film.add_sample(int(e.pixel % std::uint32_t(w)), int(e.pixel / std::uint32_t(w)), e.value,
+                                e.weight);
+            for (const Splat& sp : o.splats) splat_film.add_splat(sp);
+            nonfinite += std::uint64_t(o.dropped);
+        }
+        wv.chunks = 0;
+    };
+    const bool timed = options.time_budget > 0;
+    Progress progress("render", timed ? 0 : pixels * std::uint64_t(options.spp), "samples", options.quiet);
+
+    // Chunks [g0, g1) of the sequence g = sample index · chunks_per_pass + pixel chunk.
+    auto run = [&](std::size_t g0, std::size_t g1) {
+        int cur = 0;
+        for (std::size_t first = g0; first < g1; first += kWaveChunks, cur = 1 - cur) {
+            Wave& wv = waves[cur];
+            wv.chunks = std::min<std::size_t>(kWaveChunks, g1 - first);
+            arena.execute([&] {
+                tbb::task_group previous;
+                previous.run([&] { apply(waves[1 - cur]); });
+                tbb::parallel_for(std::size_t(0), wv.chunks, [&](std::size_t k) {
+                    ThreadContext& tc = contexts.local();
+                    Subpaths& sp = storage.local();
+                    std::size_t g = first + k;
+                    int s = int(g / chunks_per_pass);
+                    std::size_t p0 = (g % chunks_per_pass) * kChunkPixels,
+                                p1 = std::min(pixels, p0 + kChunkPixels);
+                    ChunkOutput& out = wv.outputs[k];
+                    out.estimates.clear();
+                    out.splats.clear();
+                    out.dropped = 0;
+                    for (std::size_t p = p0; p < p1; ++p) {
+                        int x = int(p % std::size_t(w)), y = int(p / std::size_t(w));
+                        tc.sampler.start_pixel_sample({x, y}, s);
+                        trace(tc, sp, x, y, out);
+                    }
+                    tc.arena.reset();
+                    progress.add(p1 - p0);
+                });
+                previous.wait();
+            });
+        }
+        apply(waves[1 - cur]);
+    };
+
+    int spp = 0;
+    if (timed) {
+        do {
+            run(std::size_t(spp) * chunks_per_pass, std::size_t(spp + 1) * chunks_per_pass);
+            ++spp;
+            progress.set_fraction(progress.elapsed_seconds() / options.time_budget);
+        } while (progress.elapsed_seconds() < options.time_budget);
+    } else {
+        run(0, std::size_t(options.spp) * chunks_per_pass);
+        spp = options.spp;
+    }
+    progress.finish();
+
+    RenderResult r;
+    r.seconds = progress.elapsed_seconds();
+    r.image = film.resolve();
+    Image splats = splat_film.resolve(spp);
+    for (std::size_t i = 0; i < pixels; ++i) r.image.data()[i] += splats.data()[i];
+    r.spp = spp;
+    r.samples = pixels * std::uint64_t(spp);
+    for (auto& tc : contexts) r.rays += tc.rays;
+    r.nonfinite_samples = nonfinite;
+    r.threads = threads;
+    return r;
+}
+
+} // namespace illum

@@ -1,0 +1,344 @@
+#include "illum/render/path_vertex.h"
+
+#include <algorithm>
+
+#include "illum/bsdf/material.h"
+#include "illum/medium/medium.h"
+#include "illum/medium/sample_majorant.h"
+#include "illum/render/shadow_transmittance.h"
+
+namespace illum {
+
+namespace {
+
+// Surfaces without material a walk may cross (a guard against a degenerate scene of nested interfaces).
+constexpr int kMaxCrossings = 1024;
+
+TransportMode other(TransportMode m) {
+    return m == TransportMode::Radiance ? TransportMode::Importance : TransportMode::Radiance;
+}
+
+} // namespace
+
+const Medium* PathVertex::medium_towards(Point3f q) const {
+    switch (type) {
+    case VertexType::Surface:
+        return hit.medium_for(q - p);
+    case VertexType::Light:
+        return light ? light->medium_towards(q - p, ng) : nullptr;
+    default:
+        return medium;
+    }
+}
+
+float shading_normal_adjoint(const SurfaceHit& hit, Vector3f wo, Vector3f wi) {
+    if (hit.ns == hit.n) return 1;
+    float num = std::abs(dot(wo, Vector3f(hit.ns))) * std::abs(dot(wi, Vector3f(hit.n)));
+    float den = std::abs(dot(wo, Vector3f(hit.n))) * std::abs(dot(wi, Vector3f(hit.ns)));
+    return den > 0 ? num / den : 0.0f;
+}
+
+float convert_density(const PathVertex& v, float pdf, const PathVertex& next) {
+    if (next.is_infinite_light()) return pdf;
+    Vector3f w = next.p - v.p;
+    float d2 = length_squared(w);
+    if (!(d2 > 0)) return 0;
+    float inv_d2 = 1 / d2;
+    if (next.on_surface()) pdf *= std::abs(dot(Vector3f(next.ng), w)) * std::sqrt(inv_d2);
+    return pdf * inv_d2;
+}
+
+float infinite_light_density(const PathContext& ctx, Vector3f w) {
+    float pdf = 0;
+    for (const Light* l : ctx.scene.infinite_lights) {
+        AreaPdf pos;
+        SolidAnglePdf dir;
+        l->pdf_le(Ray{Point3f{}, w}, {}, &pos, &dir);
+        pdf += ctx.scene.light_sampler.pmf(l) * dir.value;
+    }
+    return pdf;
+}
+
+float pdf_light(const PathContext& ctx, const PathVertex& v, const PathVertex& next) {
+    Vector3f w = next.p - v.p;
+    float d2 = length_squared(w);
+    if (!(d2 > 0)) return 0;
+    float inv_d2 = 1 / d2;
+    w = w * std::sqrt(inv_d2);
+    float pdf = 0;
+    if (v.is_infinite_light()) {
+        // The photon starts on the disk of the scene's radius: its density per unit area at next is the
+        // disk's (perpendicular to w) times the cosine there.
+        pdf = disk_emission_pdf(ctx.scene_radius).value;
+    } else {
+        const Light* light = v.type == VertexType::Light ? v.light : v.hit.area_light;
+        if (!light) return 0;
+        AreaPdf pos;
+        SolidAnglePdf dir;
+        light->pdf_le(Ray{v.p, w}, v.ng, &pos, &dir);
+        pdf = dir.value * inv_d2;
+    }
+    if (next.on_surface()) pdf *= std::abs(dot(Vector3f(next.ng), w));
+    return pdf;
+}
+
+float pdf_light_origin(const PathContext& ctx, const PathVertex& v, const PathVertex& next) {
+    Vector3f w = next.p - v.p;
+    float d2 = length_squared(w);
+    if (!(d2 > 0)) return 0;
+    w = w / std::sqrt(d2);
+    if (v.is_infinite_light()) return infinite_light_density(ctx, w);
+    const Light* light = v.type == VertexType::Light ? v.light : v.hit.area_light;
+    if (!light) return 0;
+    AreaPdf pos;
+    SolidAnglePdf dir;
+    light->pdf_le(Ray{v.p, w}, v.ng, &pos, &dir);
+    return ctx.scene.light_sampler.pmf(light) * pos.value;
+}
+
+float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* prev,
+                 const PathVertex& next) {
+    if (v.type == VertexType::Light) return pdf_light(ctx, v, next);
+    Vector3f wn = next.p - v.p;
+    float dn = length_squared(wn);
+    if (!(dn > 0)) return 0;
+    wn = wn / std::sqrt(dn);
+    Vector3f wp;
+    if (prev) {
+        wp = prev->p - v.p;
+        float dp = length_squared(wp);
+        if (!(dp > 0)) return 0;
+        wp = wp / std::sqrt(dp);
+    }
+    float pdf = 0;
+    switch (v.type) {
+    case VertexType::Camera:
+        pdf = ctx.scene.camera->pdf_we(Ray{v.p, wn}).dir.value;
+        break;
+    case VertexType::Surface:
+        pdf = v.bsdf.pdf(wp, wn).value;
+        break;
+    case VertexType::Medium:
+        // The phase function takes the directions of travel: in along -wp, out along wn.
+        pdf = v.phase.p(dot(-wp, wn));
+        break;
+    case VertexType::Light:
+        break;
+    }
+    return convert_density(v, pdf, next);
+}
+
+SampledSpectrum vertex_f(const PathVertex& v, const PathVertex& next, TransportMode mode) {
+    Vector3f wi = next.p - v.p;
+    float d2 = length_squared(wi);
+    if (!(d2 > 0)) return SampledSpectrum(0.0f);
+    wi = wi / std::sqrt(d2);
+    switch (v.type) {
+    case VertexType::Surface: {
+        SampledSpectrum f = v.bsdf.f(v.wo, wi, mode).s;
+        if (mode == TransportMode::Importance) f *= shading_normal_adjoint(v.hit, v.wo, wi);
+        return f;
+    }
+    case VertexType::Medium:
+        return SampledSpectrum(v.phase.p(dot(-v.wo, wi)));
+    default:
+        return SampledSpectrum(0.0f);
+    }
+}
+
+SampledSpectrum vertex_le(const PathContext& ctx, const PathVertex& v, const PathVertex& towards) {
+    if (!v.is_light()) return SampledSpectrum(0.0f);
+    Vector3f w = towards.p - v.p;
+    float d2 = length_squared(w);
+    if (!(d2 > 0)) return SampledSpectrum(0.0f);
+    w = w / std::sqrt(d2);
+    if (v.is_infinite_light()) {
+        SampledSpectrum le(0.0f);
+        for (const Light* l : ctx.scene.infinite_lights) le += l->le(Ray{v.p, -w}, ctx.tc.lambda).s;
+        return le;
+    }
+    if (v.type == VertexType::Surface) return v.hit.area_light->radiance(v.hit, w, ctx.tc.lambda).s;
+    return SampledSpectrum(0.0f);
+}
+
+int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, int max_vertices,
+         TransportMode mode, int ch, PathVertex* path) {
+    if (max_vertices <= 0) return 0;
+    ThreadContext& tc = ctx.tc;
+    Sampler& sampler = tc.sampler;
+    int n = 0;
+    float pdf_fwd = pdf_dir;
+    // The path's densities in every channel relative to the sampling channel's (free flights only).
+    SampledSpectrum r_u(1.0f);
+    for (int crossings = 0; crossings < kMaxCrossings;) {
+        if (beta.is_black() || !beta.is_finite()) break;
+        PathVertex& v = path[n];
+        PathVertex& prev = path[n - 1];
+        SurfaceHit hit;
+        ++tc.rays;
+        bool found = ctx.scene.intersect(ray, &hit);
+        if (ray.medium) {
+            bool scattered = false, terminated = false;
+            const Medium* medium = ray.medium;
+            SampledSpectrum t_maj = sample_t_maj(
+                ray, found ? hit.t : kInfinity, sampler.get_1d(), ctx.rng, tc.lambda, ch,
+                [&](Point3f p, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
+                    float u = ctx.rng.uniform_float();
+                    float p_absorb = mp.sigma_a[ch] / sigma_maj[ch],
+                          p_scatter = mp.sigma_s[ch] / sigma_maj[ch];
+                    if (u < p_absorb) {
+                        terminated = true;
+                        return false;
+                    }
+                    if (u < p_absorb + p_scatter) {
+                        // A real scattering event: a medium vertex.
+                        float pdf = t_m[ch] * mp.sigma_s[ch];
+                        beta *= t_m * mp.sigma_s / pdf;
+                        r_u *= t_m * mp.sigma_s / pdf;
+                        Vector3f travel = ray.d / length(ray.d);
+                        v = PathVertex{};
+                        v.type = VertexType::Medium;
+                        v.p = p;
+                        v.wo = -travel;
+                        v.medium = medium;
+                        v.phase = mp.phase;
+                        float avg = r_u.average();
+                        v.beta = avg > 0 ? beta / avg : SampledSpectrum(0.0f);
+                        v.pdf_fwd = convert_density(prev, pdf_fwd, v);
+                        if (++n >= max_vertices) {
+                            terminated = true;
+                            return false;
+                        }
+                        float phase_pdf = 0;
+                        Vector3f wi = mp.phase.sample(travel, sampler.get_2d(), &phase_pdf);
+                        if (!(phase_pdf > 0)) {
+                            terminated = true;
+                            return false;
+                        }
+                        // β *= p / pdf = 1 (Henyey-Greenstein is sampled exactly, and is symmetric, so the
+                        // reverse density is the same number).
+                        pdf_fwd = phase_pdf;
+                        prev.pdf_rev = convert_density(v, phase_pdf, prev);
+                        ray = Ray{p, wi, kInfinity, medium};
+                        scattered = true;
+                        return false;
+                    }
+                    SampledSpectrum sigma_n = clamp(sigma_maj - mp.sigma_a - mp.sigma_s, 0.0f, kInfinity);
+                    float pdf = t_m[ch] * sigma_n[ch];
+                    if (pdf == 0) {
+                        terminated = true;
+                        return false;
+                    }
+                    beta *= t_m * sigma_n / pdf;
+                    r_u *= t_m * sigma_n / pdf;
+                    return !beta.is_black();
+                });
+            if (terminated || beta.is_black() || !beta.is_finite()) return n;
+            if (scattered) continue;
+            SampledSpectrum rel = relative_to_channel(t_maj, ch);
+            beta *= rel;
+            r_u *= rel;
+            if (beta.is_black()) return n;
+        }
+        float avg = r_u.average();
+        if (!(avg > 0)) return n;
+        if (!found) {
+            // A camera ray that leaves the scene ends at the environment: a light vertex at infinity (its p
+            // only gives the direction, from the previous vertex).
+            if (mode == TransportMode::Radiance && !ctx.scene.infinite_lights.empty()) {
+                v = PathVertex{};
+                v.type = VertexType::Light;
+                v.p = prev.p + ray.d / length(ray.d) * std::max(2 * ctx.scene_radius, 1.0f);
+                v.beta = beta / avg;
+                v.pdf_fwd = pdf_fwd;
+                ++n;
+            }
+            break;
+        }
+        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.lambda, tc.arena) : BSDF();
+        if (!bsdf) {
+            // An interface between media: crossed, not a vertex.
+            ray = hit.spawn_ray(ray.d);
+            ++crossings;
+            continue;
+        }
+        v = PathVertex{};
+        v.type = VertexType::Surface;
+        v.hit = hit;
+        v.bsdf = bsdf;
+        v.p = hit.p;
+        v.p_error = hit.p_error;
+        v.ng = hit.n;
+        v.ns = hit.ns;
+        v.wo = hit.wo;
+        v.beta = beta / avg;
+        v.pdf_fwd = convert_density(prev, pdf_fwd, v);
+        ++n;
+        if (n >= max_vertices || bsdf.flags() == kNone) break;
+        float u_lobe = sampler.get_1d();
+        Point2f u_dir = sampler.get_2d();
+        auto bs = bsdf.sample(hit.wo, u_lobe, u_dir, mode);
+        if (!bs) break;
+        pdf_fwd = bs->pdf_is_proportional ? bsdf.pdf(hit.wo, bs->wi, mode).value : bs->pdf.value;
+        float cos_i = std::abs(dot(bs->wi, Vector3f(hit.ns)));
+        if (mode == TransportMode::Importance) cos_i *= shading_normal_adjoint(hit, hit.wo, bs->wi);
+        beta *= throughput_weight(bs->f, cos_i, bs->pdf);
+        float pdf_rev = bsdf.pdf(bs->wi, hit.wo, other(mode)).value;
+        if (bs->is_specular()) {
+            v.delta = true;
+            pdf_rev = pdf_fwd = 0;
+        }
+        prev.pdf_rev = convert_density(v, pdf_rev, prev);
+        ray = hit.spawn_ray(bs->wi);
+    }
+    return n;
+}
+
+SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVertex& a, const PathVertex& b,
+                                         int ch) {
+    Ray ray;
+    ShadowTarget target;
+    if (b.is_infinite_light()) {
+        Vector3f w = normalize(b.p - a.p);
+        target.at_infinity = true;
+        target.wi = w;
+        if (a.type == VertexType::Surface)
+            ray = a.hit.spawn_ray(w);
+        else
+            ray = Ray{a.p, w, kInfinity, a.medium_towards(b.p)};
+    } else {
+        target = ShadowTarget{b.p, b.p_error, b.ng, false, {}};
+        if (a.type == VertexType::Surface) {
+            if (!b.on_surface()) {
+                ray = a.hit.spawn_ray_to(b.p);
+            } else {
+                ray = spawn_ray_to(a.p, a.p_error, a.ng, b.p, b.p_error, b.ng);
+                ray.medium = a.hit.medium_for(b.p - a.p);
+            }
+        } else {
+            Point3f q = b.on_surface() ? offset_ray_origin(b.p, b.p_error, b.ng, a.p - b.p) : b.p;
+            ray = Ray{a.p, q - a.p, 1 - 1e-4f, a.medium_towards(b.p)};
+        }
+    }
+    SampledSpectrum r_u(1.0f), r_l(1.0f);
+    SampledSpectrum t =
+        shadow_transmittance(ctx.scene, ray, target, ch, ctx.rng, ctx.tc.lambda, &r_u, &r_l, &ctx.tc.rays);
+    if (t.is_black()) return t;
+    // One-sample spectral MIS over the tracking channel (pbrt-v4's Integrator::Tr): T / avg(r_l).
+    float avg = r_l.average();
+    return avg > 0 ? t / avg : SampledSpectrum(0.0f);
+}
+
+SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, int ch) {
+    Vector3f d = a.p - b.p;
+    float d2 = length_squared(d);
+    if (!(d2 > 0)) return SampledSpectrum(0.0f);
+    float g = 1 / d2;
+    d = d * std::sqrt(g);
+    if (a.on_surface()) g *= std::abs(dot(Vector3f(a.ns), d));
+    if (b.on_surface()) g *= std::abs(dot(Vector3f(b.ns), d));
+    if (!(g > 0)) return SampledSpectrum(0.0f);
+    return connection_transmittance(ctx, a, b, ch) * g;
+}
+
+} // namespace illum

@@ -1,0 +1,122 @@
+// Path vertices for bidirectional methods (Veach 1997 §10.2-10.3; PBR 4th ed. §16.3 (pbrt-v4's BDPT
+// Vertex)): a camera or light subpath is an array of vertices (camera, light, surface, medium), each with
+// the throughput β of its subpath prefix and the two area densities that the balance heuristic needs:
+//   pdf_fwd: the density with which its own subpath generated it (per unit area at the vertex, with the
+//            cosine there when it is on a surface; per steradian for a vertex at infinity),
+//   pdf_rev: the density with which the other subpath would have generated it, reversed through its
+//            successor (set by the walk, and recomputed for the vertices next to a connection).
+// A vertex sampled by a specular lobe is `delta` (both densities 0 there, remapped to 1 by the weight).
+//
+// As in pbrt-v4, the densities are those of the directions only: free-flight sampling (σ T) is left out
+// on both sides, so the weights are not exactly the balance heuristic in media but still sum to one over
+// the strategies of every path (each is evaluated from the same per-vertex ratios).
+//
+// Spectral: a walk samples its distances in one channel (chosen per subpath); β is the one-sample spectral
+// MIS estimate over the channel choice, f / avg_c p_c (volpath_integrator.h), which pbrt-v4's BDPT (channel
+// 0, f / p_0) is not; the directional densities do not depend on the channel.
+//
+// The layer is shared: BDPT uses it, and vertex merging can reuse walk(), the densities and connect_g().
+#pragma once
+
+#include <cstdint>
+
+#include "illum/bsdf/bxdf.h"
+#include "illum/camera/camera.h"
+#include "illum/geometry/surface_hit.h"
+#include "illum/light/light.h"
+#include "illum/math/rng.h"
+#include "illum/medium/henyey_greenstein.h"
+#include "illum/render/integrator.h"
+
+namespace illum {
+
+enum class VertexType : std::uint8_t { Camera, Light, Surface, Medium };
+
+struct PathVertex {
+    VertexType type = VertexType::Surface;
+    bool delta = false;
+    SampledSpectrum beta;
+    float pdf_fwd = 0, pdf_rev = 0;
+    Point3f p;
+    Vector3f p_error;
+    Normal3f ng, ns;                // geometric and shading normals; zero off surfaces (and for the camera)
+    Vector3f wo;                    // surface / medium: unit direction towards the previous vertex
+    const Medium* medium = nullptr; // medium vertex: its medium; camera / point light: where it sits
+    HenyeyGreenstein phase;         // medium vertex
+    const Light* light = nullptr;   // light vertex (nullptr: an escaped ray, every infinite light)
+    SurfaceHit hit;                 // surface vertex
+    BSDF bsdf;                      // surface vertex (in the thread's arena)
+
+    bool on_surface() const { return ng != Normal3f{}; }
+    bool is_light() const {
+        return type == VertexType::Light || (type == VertexType::Surface && hit.area_light);
+    }
+    bool is_delta_light() const { return type == VertexType::Light && light && is_delta(light->type()); }
+    // A vertex at infinity: an environment or directional light (its p only gives a direction).
+    bool is_infinite_light() const {
+        return type == VertexType::Light &&
+               (!light || light->type() == LightType::Infinite || light->type() == LightType::DeltaDirection);
+    }
+    bool is_connectible() const {
+        switch (type) {
+        case VertexType::Medium:
+        case VertexType::Camera:
+            return true;
+        case VertexType::Light:
+            return !light || light->type() != LightType::DeltaDirection;
+        case VertexType::Surface:
+            return bsdf.is_non_specular();
+        }
+        return false;
+    }
+    // The medium a ray leaving the vertex towards q travels in.
+    const Medium* medium_towards(Point3f q) const;
+};
+
+// What the walks and connections read.
+struct PathContext {
+    const Scene& scene;
+    ThreadContext& tc;
+    PCG32& rng;         // free-flight and ratio-tracking steps beyond the sampler's first
+    float scene_radius; // of the bounding sphere: infinite lights emit from its disk
+};
+
+// Veach 1997 eq. 5.19: the adjoint BSDF's shading-normal factor |ωo·Ns| |ωi·Ng| / (|ωo·Ng| |ωi·Ns|) for
+// importance transport (illum's BSDFs leave it to the integrator, as lightpath_integrator.cpp does).
+float shading_normal_adjoint(const SurfaceHit& hit, Vector3f wo, Vector3f wi);
+
+// The density `pdf` per steradian at v of the direction towards `next`, per unit area at next (the cosine
+// there when on a surface); unchanged when next is at infinity.
+float convert_density(const PathVertex& v, float pdf, const PathVertex& next);
+// The density (area, at next) with which v, entered from prev (nullptr for the camera), samples the
+// direction towards next. Light vertices: pdf_light.
+float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* prev, const PathVertex& next);
+// The density (area, at next) with which the light at v emits towards next.
+float pdf_light(const PathContext& ctx, const PathVertex& v, const PathVertex& next);
+// The density with which a light subpath starts at v (light selection times position; for a vertex at
+// infinity the selection-weighted direction density towards next).
+float pdf_light_origin(const PathContext& ctx, const PathVertex& v, const PathVertex& next);
+// Σ over the infinite lights of pmf · pdf_dir of light travelling along w.
+float infinite_light_density(const PathContext& ctx, Vector3f w);
+// The scattering value at v from its predecessor towards next: f (with the adjoint factor in importance
+// mode) or the phase function. Excludes the cosine.
+SampledSpectrum vertex_f(const PathVertex& v, const PathVertex& next, TransportMode mode);
+// Emitted radiance from the light at v towards `towards`.
+SampledSpectrum vertex_le(const PathContext& ctx, const PathVertex& v, const PathVertex& towards);
+
+// The random walk (PBR 4th ed. §16.3.2, RandomWalk) from `ray` (its medium set) with throughput beta and
+// the direction's density pdf_dir at path[-1] (which must exist): fills path[0 .. max_vertices) through
+// surfaces and media (delta tracking in `channel`; interfaces are crossed, not vertices), and returns the
+// number of vertices. An escaped camera ray ends in a light vertex at infinity.
+int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, int max_vertices,
+         TransportMode mode, int channel, PathVertex* path);
+
+// The transmittance between two vertices through interfaces and media (ratio tracking, shadow_transmittance
+// in `channel`, with its one-sample spectral MIS): zero when blocked. to_infinity: b is a direction only.
+SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVertex& a, const PathVertex& b,
+                                         int channel);
+// The geometry term with transmittance: |cos_a| |cos_b| T / d² (cosines with the shading normals, only at
+// surface vertices).
+SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, int channel);
+
+} // namespace illum
