@@ -165,7 +165,7 @@ void add_render_command(CLI::App& app) {
         ->check(positive_integer());
     cmd->add_option("--seed", args->seed, "Seed of the sample sequences");
     cmd->add_option("--integrator", args->integrator,
-                    "path, direct, albedo, normal, lightpath or sppm (default: the scene's)");
+                    "path, volpath, bdpt, direct, albedo, normal, lightpath or sppm (default: the scene's)");
     cmd->add_option("--max-depth", args->max_depth,
                     "Maximum number of scattering events (default: the scene's)")
         ->check(CLI::Range(-1, 100000));
