@@ -228,7 +228,8 @@ LightSource "point" "point3 from" [0 {3} {4}] "rgb I" [{5} {5} {5}]
         double expected_value = sum * dt / 3;
         const double expected[3] = {expected_value, expected_value, expected_value};
         expect_channels(render_pbrt(scene, volpath(64, spectral)), expected,
-                        spectral ? "point light single scattering, spectral" : "point light single scattering, RGB",
+                        spectral ? "point light single scattering, spectral"
+                                 : "point light single scattering, RGB",
                         spectral ? 4e-3 : 2e-4);
     }
 }

@@ -383,7 +383,7 @@ TEST(PbrtParser, MediaAreRecordedMotionWarns) {
     EXPECT_FALSE(s.media.at("fog").params.has("type"));
     EXPECT_EQ(s.camera.medium, "fog");
     EXPECT_TRUE(s.camera.camera_from_world.is_identity()); // end-time transforms are ignored
-    ASSERT_EQ(s.warnings.size(), 1u); // motion blur (media are rendered)
+    ASSERT_EQ(s.warnings.size(), 1u);                      // motion blur (media are rendered)
     EXPECT_NE(s.warnings[0].find("motion blur"), std::string::npos);
 }
 

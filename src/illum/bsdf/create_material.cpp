@@ -323,7 +323,8 @@ private:
                 spec.factory.textured ? spec.factory.textured(values, albedo, spec.normal_albedo) : nullptr);
         } else {
             if (!spec.factory.textured)
-                throw Error(m_.loc, fmt::format("material \"{}\" cannot have textured parameters", spec.name));
+                throw Error(m_.loc,
+                            fmt::format("material \"{}\" cannot have textured parameters", spec.name));
             made = spec.factory.textured(std::move(values), albedo, spec.normal_albedo);
         }
         made->may_be_specular = specular;

@@ -30,8 +30,8 @@
 #include <limits>
 
 #include "illum/bsdf/common.h"
-#include "illum/medium/henyey_greenstein.h"
 #include "illum/bsdf/layer_interfaces.h"
+#include "illum/medium/henyey_greenstein.h"
 
 namespace illum {
 

@@ -6,8 +6,8 @@
 // mesh emits P).
 #pragma once
 
-#include "illum/radiometry/emission.h"
 #include "illum/param/entity.h"
+#include "illum/radiometry/emission.h"
 #include "illum/radiometry/quantity.h"
 #include "illum/util/diagnostics.h"
 

@@ -2,8 +2,8 @@
 #pragma once
 
 #include "illum/geometry/shape.h"
-#include "illum/radiometry/emission.h"
 #include "illum/light/light.h"
+#include "illum/radiometry/emission.h"
 #include "illum/texture/texture.h"
 
 namespace illum {

@@ -3,10 +3,10 @@
 // bounding sphere: Φ = E π r².
 #pragma once
 
-#include "illum/radiometry/emission.h"
 #include "illum/light/light.h"
 #include "illum/math/frame.h"
 #include "illum/math/warp.h"
+#include "illum/radiometry/emission.h"
 
 namespace illum {
 

@@ -1,9 +1,9 @@
 // An isotropic point source of intensity I [W/sr]: it delivers biradiance I / r² (total power 4π I).
 #pragma once
 
-#include "illum/radiometry/emission.h"
 #include "illum/light/light.h"
 #include "illum/math/warp.h"
+#include "illum/radiometry/emission.h"
 
 namespace illum {
 

@@ -6,10 +6,10 @@
 
 #include <algorithm>
 
-#include "illum/radiometry/emission.h"
 #include "illum/light/light.h"
 #include "illum/math/frame.h"
 #include "illum/math/warp.h"
+#include "illum/radiometry/emission.h"
 
 namespace illum {
 

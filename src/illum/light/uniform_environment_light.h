@@ -1,9 +1,9 @@
 // A constant environment: radiance L arrives from every direction. Sampled uniformly over the sphere.
 #pragma once
 
-#include "illum/radiometry/emission.h"
 #include "illum/light/light.h"
 #include "illum/math/warp.h"
+#include "illum/radiometry/emission.h"
 
 namespace illum {
 
