@@ -1,5 +1,7 @@
 #include "illum/render/bdpt_integrator.h"
 
+#include "illum/render/chunked_schedule.h"
+
 #include <algorithm>
 #include <oneapi/tbb/enumerable_thread_specific.h>
 #include <oneapi/tbb/global_control.h>
@@ -306,73 +308,31 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         out.estimates.push_back({pixel, scene_.sensor.to_rgb(Radiance3(l), tc.lambda), fs.weight});
     };
 
-    const std::size_t chunks_per_pass = (pixels + kChunkPixels - 1) / kChunkPixels;
-    struct Wave {
-        std::vector<ChunkOutput> outputs = std::vector<ChunkOutput>(kWaveChunks);
-        std::size_t chunks = 0;
-    };
-    Wave waves[2];
     std::uint64_t nonfinite = 0;
-    auto apply = [&](Wave& wv) {
-        for (std::size_t k = 0; k < wv.chunks; ++k) {
-            const ChunkOutput& o = wv.outputs[k];
+    const bool timed = options.time_budget > 0;
+    Progress progress("render", timed ? 0 : pixels * std::uint64_t(options.spp), "samples", options.quiet);
+    int spp = run_chunked_schedule<ChunkOutput>(
+        options, pixels, arena, progress,
+        [&](ChunkOutput& out, int s, std::size_t p0, std::size_t p1) {
+            ThreadContext& tc = contexts.local();
+            Subpaths& sp = storage.local();
+            out.estimates.clear();
+            out.splats.clear();
+            out.dropped = 0;
+            for (std::size_t p = p0; p < p1; ++p) {
+                int x = int(p % std::size_t(w)), y = int(p / std::size_t(w));
+                tc.sampler.start_pixel_sample({x, y}, s);
+                trace(tc, sp, x, y, out);
+            }
+            tc.arena.reset();
+        },
+        [&](const ChunkOutput& o) {
             for (const CameraEstimate& e : o.estimates)
                 film.add_sample(int(e.pixel % std::uint32_t(w)), int(e.pixel / std::uint32_t(w)), e.value,
                                 e.weight);
             for (const Splat& sp : o.splats) splat_film.add_splat(sp);
             nonfinite += std::uint64_t(o.dropped);
-        }
-        wv.chunks = 0;
-    };
-    const bool timed = options.time_budget > 0;
-    Progress progress("render", timed ? 0 : pixels * std::uint64_t(options.spp), "samples", options.quiet);
-
-    // Chunks [g0, g1) of the sequence g = sample index · chunks_per_pass + pixel chunk.
-    auto run = [&](std::size_t g0, std::size_t g1) {
-        int cur = 0;
-        for (std::size_t first = g0; first < g1; first += kWaveChunks, cur = 1 - cur) {
-            Wave& wv = waves[cur];
-            wv.chunks = std::min<std::size_t>(kWaveChunks, g1 - first);
-            arena.execute([&] {
-                tbb::task_group previous;
-                previous.run([&] { apply(waves[1 - cur]); });
-                tbb::parallel_for(std::size_t(0), wv.chunks, [&](std::size_t k) {
-                    ThreadContext& tc = contexts.local();
-                    Subpaths& sp = storage.local();
-                    std::size_t g = first + k;
-                    int s = int(g / chunks_per_pass);
-                    std::size_t p0 = (g % chunks_per_pass) * kChunkPixels,
-                                p1 = std::min(pixels, p0 + kChunkPixels);
-                    ChunkOutput& out = wv.outputs[k];
-                    out.estimates.clear();
-                    out.splats.clear();
-                    out.dropped = 0;
-                    for (std::size_t p = p0; p < p1; ++p) {
-                        int x = int(p % std::size_t(w)), y = int(p / std::size_t(w));
-                        tc.sampler.start_pixel_sample({x, y}, s);
-                        trace(tc, sp, x, y, out);
-                    }
-                    tc.arena.reset();
-                    progress.add(p1 - p0);
-                });
-                previous.wait();
-            });
-        }
-        apply(waves[1 - cur]);
-    };
-
-    int spp = 0;
-    if (timed) {
-        do {
-            run(std::size_t(spp) * chunks_per_pass, std::size_t(spp + 1) * chunks_per_pass);
-            ++spp;
-            progress.set_fraction(progress.elapsed_seconds() / options.time_budget);
-        } while (progress.elapsed_seconds() < options.time_budget);
-    } else {
-        run(0, std::size_t(options.spp) * chunks_per_pass);
-        spp = options.spp;
-    }
-    progress.finish();
+        });
 
     RenderResult r;
     r.seconds = progress.elapsed_seconds();

@@ -38,8 +38,6 @@ namespace illum {
 
 class BDPTIntegrator final : public WholeImageIntegrator {
 public:
-    static constexpr int kChunkPixels = 1024;
-    static constexpr int kWaveChunks = 64;
     static constexpr int kUnboundedDepth = 32;
 
     // max_depth: the most scattering events of a path (pbrt-v4's "maxdepth"; -1: kUnboundedDepth). Throws

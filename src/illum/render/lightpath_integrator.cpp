@@ -10,6 +10,7 @@
 
 #include "illum/light/light.h"
 #include "illum/medium/sample_majorant.h"
+#include "illum/render/chunked_schedule.h"
 #include "illum/render/direct_view_mis.h"
 #include "illum/render/shadow_transmittance.h"
 #include "illum/util/error.h"
@@ -244,68 +245,30 @@ RenderResult LightPathIntegrator::render_image(const RenderOptions& options) con
     SplatFilm film(w, h, *scene_.filter);
     const bool spectral = options.spectral;
 
-    const std::size_t chunks_per_pass = (pixels + kChunkPixels - 1) / kChunkPixels;
-    // Two sets of splat lists: while one wave is traced, the previous one's lists are added to the film
-    // (in chunk order, by one task), so the serial part overlaps the parallel one.
-    struct Wave {
-        std::vector<std::vector<Splat>> lists = std::vector<std::vector<Splat>>(kWaveChunks);
-        std::vector<int> dropped = std::vector<int>(kWaveChunks, 0);
-        std::size_t chunks = 0;
+    // One chunk's splats and the number of contributions dropped as non-finite.
+    struct ChunkSplats {
+        std::vector<Splat> splats;
+        int dropped = 0;
     };
-    Wave waves[2];
     std::uint64_t nonfinite = 0;
-    auto apply = [&](Wave& wv) {
-        for (std::size_t k = 0; k < wv.chunks; ++k) {
-            for (const Splat& sp : wv.lists[k]) film.add_splat(sp);
-            nonfinite += std::uint64_t(wv.dropped[k]);
-        }
-        wv.chunks = 0;
-    };
     const bool timed = options.time_budget > 0;
     Progress progress("render", timed ? 0 : pixels * std::uint64_t(options.spp), "samples", options.quiet);
-
-    // Chunks [g0, g1) of the sequence (sample index s, pixel chunk c), g = s · chunks_per_pass + c.
-    auto run = [&](std::size_t g0, std::size_t g1) {
-        int cur = 0;
-        for (std::size_t first = g0; first < g1; first += kWaveChunks, cur = 1 - cur) {
-            Wave& wv = waves[cur];
-            wv.chunks = std::min<std::size_t>(kWaveChunks, g1 - first);
-            arena.execute([&] {
-                tbb::task_group previous;
-                previous.run([&] { apply(waves[1 - cur]); });
-                tbb::parallel_for(std::size_t(0), wv.chunks, [&](std::size_t k) {
-                    ThreadContext& tc = contexts.local();
-                    std::size_t g = first + k;
-                    int s = int(g / chunks_per_pass);
-                    std::size_t p0 = (g % chunks_per_pass) * kChunkPixels,
-                                p1 = std::min(pixels, p0 + kChunkPixels);
-                    wv.lists[k].clear();
-                    wv.dropped[k] = 0;
-                    for (std::size_t p = p0; p < p1; ++p) {
-                        tc.sampler.start_pixel_sample({int(p % w), int(p / w)}, s);
-                        wv.dropped[k] += trace_particle(tc, spectral, wv.lists[k]);
-                    }
-                    tc.arena.reset();
-                    progress.add(p1 - p0);
-                });
-                previous.wait();
-            });
-        }
-        apply(waves[1 - cur]);
-    };
-
-    int spp = 0;
-    if (timed) {
-        do {
-            run(std::size_t(spp) * chunks_per_pass, std::size_t(spp + 1) * chunks_per_pass);
-            ++spp;
-            progress.set_fraction(progress.elapsed_seconds() / options.time_budget);
-        } while (progress.elapsed_seconds() < options.time_budget);
-    } else {
-        run(0, std::size_t(options.spp) * chunks_per_pass);
-        spp = options.spp;
-    }
-    progress.finish();
+    int spp = run_chunked_schedule<ChunkSplats>(
+        options, pixels, arena, progress,
+        [&](ChunkSplats& out, int s, std::size_t p0, std::size_t p1) {
+            ThreadContext& tc = contexts.local();
+            out.splats.clear();
+            out.dropped = 0;
+            for (std::size_t p = p0; p < p1; ++p) {
+                tc.sampler.start_pixel_sample({int(p % w), int(p / w)}, s);
+                out.dropped += trace_particle(tc, spectral, out.splats);
+            }
+            tc.arena.reset();
+        },
+        [&](const ChunkSplats& out) {
+            for (const Splat& sp : out.splats) film.add_splat(sp);
+            nonfinite += std::uint64_t(out.dropped);
+        });
 
     RenderResult r;
     r.seconds = progress.elapsed_seconds();

@@ -24,9 +24,6 @@ namespace illum {
 
 class LightPathIntegrator final : public WholeImageIntegrator {
 public:
-    static constexpr int kChunkPixels = 1024;
-    static constexpr int kWaveChunks = 64;
-
     // max_depth: the most scattering vertices a particle connects from (pbrt-v4's "maxdepth"; -1
     // unbounded, Russian roulette ends it). Throws illum::Error if the camera has no importance.
     // caustics_only: only paths whose first scattering after the light is specular (a delta lobe) and whose

@@ -1,0 +1,75 @@
+// The deterministic schedule of the integrators that splat (lightpath, bdpt): the sequence of chunks
+// g = sample index · chunks_per_pass + pixel chunk (kChunkPixels pixels at one sample index) is traced in
+// waves of kWaveChunks chunks in parallel, each chunk into its own output; the outputs are then applied in
+// chunk order by one task, while the next wave is traced. What a chunk adds to the film therefore does not
+// depend on the thread count, and the serial part overlaps the parallel one.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
+#include <oneapi/tbb/task_group.h>
+#include <vector>
+
+#include "illum/render/renderer.h"
+#include "illum/util/progress.h"
+
+namespace illum {
+
+inline constexpr std::size_t kChunkPixels = 1024;
+inline constexpr std::size_t kWaveChunks = 64;
+
+// trace(out, sample, p0, p1) traces pixels [p0, p1) at one sample index into `out` (cleared by it);
+// apply(out) adds an output to the film. Runs options.spp passes, or whole passes until
+// options.time_budget; returns the passes taken. `progress` counts pixel samples.
+template <class Output, class Trace, class Apply>
+int run_chunked_schedule(const RenderOptions& options, std::size_t pixels, tbb::task_arena& arena,
+                         Progress& progress, Trace&& trace, Apply&& apply) {
+    const std::size_t chunks_per_pass = (pixels + kChunkPixels - 1) / kChunkPixels;
+    struct Wave {
+        std::vector<Output> outputs = std::vector<Output>(kWaveChunks);
+        std::size_t chunks = 0;
+    };
+    Wave waves[2];
+    auto apply_wave = [&](Wave& wv) {
+        for (std::size_t k = 0; k < wv.chunks; ++k) apply(wv.outputs[k]);
+        wv.chunks = 0;
+    };
+    // Chunks [g0, g1) of the sequence.
+    auto run = [&](std::size_t g0, std::size_t g1) {
+        int cur = 0;
+        for (std::size_t first = g0; first < g1; first += kWaveChunks, cur = 1 - cur) {
+            Wave& wv = waves[cur];
+            wv.chunks = std::min<std::size_t>(kWaveChunks, g1 - first);
+            arena.execute([&] {
+                tbb::task_group previous;
+                previous.run([&] { apply_wave(waves[1 - cur]); });
+                tbb::parallel_for(std::size_t(0), wv.chunks, [&](std::size_t k) {
+                    std::size_t g = first + k;
+                    std::size_t p0 = (g % chunks_per_pass) * kChunkPixels,
+                                p1 = std::min(pixels, p0 + kChunkPixels);
+                    trace(wv.outputs[k], int(g / chunks_per_pass), p0, p1);
+                    progress.add(p1 - p0);
+                });
+                previous.wait();
+            });
+        }
+        apply_wave(waves[1 - cur]);
+    };
+    int spp = 0;
+    if (options.time_budget > 0) {
+        do {
+            run(std::size_t(spp) * chunks_per_pass, std::size_t(spp + 1) * chunks_per_pass);
+            ++spp;
+            progress.set_fraction(progress.elapsed_seconds() / options.time_budget);
+        } while (progress.elapsed_seconds() < options.time_budget);
+    } else {
+        run(0, std::size_t(options.spp) * chunks_per_pass);
+        spp = options.spp;
+    }
+    progress.finish();
+    return spp;
+}
+
+} // namespace illum
