@@ -149,6 +149,35 @@ AttributeEnd
     EXPECT_NEAR(m.mean, L, kSigmas * m.standard_error + 1e-4 * L);
 }
 
+// A two-sided emitter seen from either side has radiance L: the connections from the far side start behind
+// the surface they leave (from the sampled point itself, not from the photon's offset origin).
+TEST(LightPath, TwoSidedAreaLightFromBothSides) {
+    const double L = 1.5;
+    for (const char* eye : {"0 0 3", "0 0 -3"}) {
+        std::string scene = fmt::format(R"(
+LookAt {}  0 0 0  0 1 0
+Camera "perspective" "float fov" [10]
+Film "rgb" "integer xresolution" [16] "integer yresolution" [16]
+PixelFilter "box"
+WorldBegin
+AttributeBegin
+  Material "diffuse" "rgb reflectance" [0 0 0]
+  AreaLightSource "diffuse" "rgb L" [{} {} {}] "bool twosided" true
+  Shape "disk" "float radius" [1]
+AttributeEnd
+)",
+                                        eye, L, L, L);
+        test::RenderSetup setup;
+        setup.integrator = "lightpath";
+        setup.spp = 256;
+        RenderResult r = test::render_pbrt(scene, setup);
+        auto m = test::pixel_mean(r.image, 1);
+        std::printf("two-sided light seen from %s: %.5f +- %.5f, expected %.1f\n", eye, m.mean,
+                    m.standard_error, L);
+        EXPECT_NEAR(m.mean, L, kSigmas * m.standard_error + 1e-4 * L) << "eye at " << eye;
+    }
+}
+
 Image render_cornell(const std::string& integrator, int spp, std::uint64_t seed, int resolution,
                      bool spectral, int threads = 0) {
     return test::render_shared_scene("cornell-box", spp, seed, resolution, spectral, integrator, threads);

@@ -140,6 +140,11 @@ private:
             Color3 l = mfp ? mfp->rgb : Color3(kSubsurfaceDefaultMfp);
             check("reflectance", r);
             if (mfp) check("mfp", l);
+            if (!(scale > 0))
+                throw Error(ps.find("scale")->loc, "subsurface: \"scale\" must be positive with \"mfp\"");
+            for (float v : {l.r, l.g, l.b})
+                if (!(v > 0))
+                    throw Error(mfp ? ps.find("mfp")->loc : m_.loc, "subsurface: \"mfp\" must be positive");
             EffectiveAlbedoTable table(eta.value, g);
             SubsurfaceCoefficients c = subsurface_from_reflectance(r, l, scale, table);
             // Spectral mode: reflectance and mean free path at each wavelength, inverted there (as pbrt-v4
@@ -151,7 +156,8 @@ private:
                 UpliftedRgb rp = uplift_albedo_poly(r, cs), mp = uplift_unbounded_poly(l, cs);
                 auto at = [&](double nm) {
                     float rho = refl && refl->spectrum ? (*refl->spectrum)(float(nm)) : float(rp(nm));
-                    float len = mfp && mfp->spectrum ? (*mfp->spectrum)(float(nm)) : float(mp(nm));
+                    float len =
+                        std::max(mfp && mfp->spectrum ? (*mfp->spectrum)(float(nm)) : float(mp(nm)), 1e-8f);
                     return subsurface_from_reflectance(std::clamp(rho, 0.0f, 1.0f), len, scale, table);
                 };
                 (*sa)[std::size_t(i)] =

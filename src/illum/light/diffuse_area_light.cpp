@@ -73,7 +73,8 @@ std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2,
     AreaPdf pdf_pos = ss.pdf;
     Point3f o = offset_ray_origin(ss.p, ss.p_error, ss.n, w);
     Radiance3 l = emitted(ss.n, w, lambda);
-    return LightLeSample{Ray{o, w}, ss.n, l, pdf_pos, pdf_dir, l * cos_theta / pdf_pos / pdf_dir};
+    return LightLeSample{Ray{o, w}, ss.n,      l, pdf_pos, pdf_dir, l * cos_theta / pdf_pos / pdf_dir,
+                         ss.p,      ss.p_error};
 }
 
 void DiffuseAreaLight::pdf_le(const Ray& ray, Normal3f n, AreaPdf* pos, SolidAnglePdf* dir) const {

@@ -38,7 +38,8 @@ public:
         Point2f d = sample_uniform_disk_concentric(u1);
         Point3f o = center_ + w_ * radius_ + (f.s * d.x + f.t * d.y) * radius_;
         AreaPdf pdf_pos(1 / (kPi * radius_ * radius_));
-        return LightLeSample{Ray{o, -w_}, {}, {}, pdf_pos, SolidAnglePdf(1), irradiance(lambda) / pdf_pos};
+        return LightLeSample{Ray{o, -w_}, {}, {}, pdf_pos, SolidAnglePdf(1), irradiance(lambda) / pdf_pos,
+                             o,           {}};
     }
     // The direction is a delta: probability 1 for a ray along -w (to float rounding), 0 otherwise.
     void pdf_le(const Ray& ray, Normal3f, AreaPdf* pos, SolidAnglePdf* dir) const override {

@@ -60,6 +60,10 @@ struct LightLeSample {
     AreaPdf pdf_pos;
     SolidAnglePdf pdf_dir;
     Power3 flux;
+    // Area lights: the sampled point itself (ray.o is moved off the surface, towards the photon's side)
+    // and its error bound, from which a connection to the other side of a two-sided emitter must start.
+    Point3f p_surface;
+    Vector3f p_error;
 };
 
 class Light {

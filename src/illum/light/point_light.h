@@ -41,7 +41,9 @@ public:
                              {},
                              AreaPdf(1),
                              pdf_dir,
-                             intensity(lambda) / pdf_dir};
+                             intensity(lambda) / pdf_dir,
+                             position_,
+                             {}};
     }
     void pdf_le(const Ray&, Normal3f, AreaPdf* pos, SolidAnglePdf* dir) const override {
         *pos = AreaPdf(1);

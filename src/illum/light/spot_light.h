@@ -62,7 +62,7 @@ public:
         Vector3f w = frame_.to_world(sample_uniform_cone(u2, cos_end_));
         SolidAnglePdf pdf_dir(uniform_cone_pdf(cos_end_));
         Intensity3 i = intensity(w, lambda);
-        return LightLeSample{Ray{position_, w}, {}, {}, AreaPdf(1), pdf_dir, i / pdf_dir};
+        return LightLeSample{Ray{position_, w}, {}, {}, AreaPdf(1), pdf_dir, i / pdf_dir, position_, {}};
     }
     void pdf_le(const Ray& ray, Normal3f, AreaPdf* pos, SolidAnglePdf* dir) const override {
         *pos = AreaPdf(1);

@@ -23,7 +23,8 @@ public:
         e.d_ = length(c - (o + d * e.delta_));
         if (!(e.d_ > 1e-7f) || !(b > a)) return std::nullopt;
         e.theta_a_ = std::atan((a - e.delta_) / e.d_);
-        e.theta_b_ = std::isinf(b) ? kPi / 2 : std::atan((b - e.delta_) / e.d_);
+        // (just below π/2 as a float, so that tan stays positive)
+        e.theta_b_ = std::isinf(b) ? std::nextafter(kPi / 2, 0.0f) : std::atan((b - e.delta_) / e.d_);
         if (!(e.theta_b_ > e.theta_a_)) return std::nullopt;
         e.a_ = a;
         e.b_ = b;

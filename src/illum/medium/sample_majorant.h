@@ -38,6 +38,8 @@ SampledSpectrum sample_t_maj(Ray ray, float tmax, float u, PCG32& rng, const Sam
     while (std::optional<MajorantSegment> seg = it.next()) {
         const SampledSpectrum& sigma_maj = seg->sigma_maj;
         float t1 = std::min(seg->t1, FLT_MAX);
+        // An infinite density (a degenerate input) is opaque: nothing passes, and no step could be taken.
+        if (!std::isfinite(sigma_maj[channel])) return SampledSpectrum(0.0f);
         if (sigma_maj[channel] == 0) {
             // No collisions in this channel: the segment only attenuates the others.
             t_maj *= exp(-sigma_maj * (t1 - seg->t0));

@@ -23,6 +23,8 @@ inline float direct_view_weight(const Scene& scene, const Light& light, Point3f 
     at_y.n = n_y;
     float p_camera = scene.camera->pdf_we(Ray{p_lens, w}).dir.value * std::abs(dot(w, n_y)) / r2;
     float p_light = scene.light_sampler.pmf(&light) * light.pdf_le_position(at_y).value;
+    // A film position outside the film: light tracing cannot splat there, so the camera ray counts alone.
+    if (!(p_camera > 0)) return for_camera ? 1.0f : 0.0f;
     float a = for_camera ? p_camera : p_light, b = for_camera ? p_light : p_camera;
     if (std::isinf(a * a)) return 1;
     return a * a + b * b > 0 ? a * a / (a * a + b * b) : 0.0f;

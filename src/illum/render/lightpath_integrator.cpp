@@ -94,9 +94,9 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
     // no area to be seen.
     Point2f u_cam = sampler.get_2d();
     if (light->type() == LightType::Area) {
-        if (auto cs = camera.sample_wi(les->ray.o, u_cam)) {
+        if (auto cs = camera.sample_wi(les->p_surface, u_cam)) {
             SurfaceHit y;
-            y.p = les->ray.o;
+            y.p = les->p_surface;
             y.n = les->n;
             y.ns = les->n;
             Radiance3 le = light->radiance(y, cs->wi, tc.lambda);
@@ -104,11 +104,12 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
             if (!le.is_black() && cos_y > 0) {
                 // From the light towards the lens, in the medium on the lens's side of the emitter; the
                 // ray stops 1e-4 of the way short of the lens.
-                Point3f o = offset_ray_origin(les->ray.o, {}, les->n, cs->wi);
+                Point3f o = offset_ray_origin(les->p_surface, les->p_error, les->n, cs->wi);
                 // Beside volpath, weighed against its camera rays that hit the light (direct_view_mis.h).
-                float w = caustics_only_ ? direct_view_weight(scene_, *light, les->ray.o, les->n, cs->p_lens,
-                                                              /*for_camera=*/false)
-                                         : 1.0f;
+                float w = caustics_only_
+                              ? direct_view_weight(scene_, *light, les->p_surface, les->n, cs->p_lens,
+                                                   /*for_camera=*/false)
+                              : 1.0f;
                 connect(nullptr, o, light->medium_towards(cs->wi, les->n), *cs,
                         le.s * (w * cos_y / pmf) / les->pdf_pos.value);
             }
@@ -139,7 +140,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
                         terminated = true;
                         return false;
                     }
-                    if (u < p_absorb + p_scatter) {
+                    if (u < p_absorb + p_scatter || medium->is_homogeneous()) { // no null collisions there
                         // A medium vertex is not specular: with caustics only, a particle scattered first
                         // in a medium is the camera paths' to find.
                         if (caustics_only_ && first_vertex) {

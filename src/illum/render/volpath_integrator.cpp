@@ -142,6 +142,9 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         path.rng.set_sequence(hash(std::uint32_t(a * 0x1p32f), std::uint32_t(b * 0x1p32f)));
     }
     const int ch = path.channel;
+    // Path space is split with light tracing only where it can splat: camera samples on the film (a filter
+    // wider than half a pixel puts border pixels' samples outside it).
+    const bool split = caustics_by_light_tracing_ && scene_.camera->pdf_we(camera_ray).dir.value > 0;
     SampledSpectrum& beta = path.beta;
     SampledSpectrum& r_u = path.r_u;
     SampledSpectrum& r_l = path.r_l;
@@ -155,10 +158,10 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
     // Emission found by the unidirectional technique, weighed against light sampling from prev_ctx.
     auto add_emission = [&](SampledSpectrum le, const Light* light, const SurfaceHit* hit) {
         if (le.is_black()) return;
-        // A caustic (specular bounce before the light, non-specular first vertex) is light tracing's.
-        if (caustics_by_light_tracing_ && hit && specular_bounce && depth > 0 && first_vertex_non_specular)
-            return;
-        if (depth == 0 && caustics_by_light_tracing_ && hit) {
+        // A caustic (specular bounce before the light, non-specular first vertex) is light tracing's, for
+        // film positions light tracing can splat to.
+        if (split && hit && specular_bounce && depth > 0 && first_vertex_non_specular) return;
+        if (depth == 0 && split && hit) {
             // A light seen directly: weighed against light tracing's view of it (volpath_caustics.h).
             float w = direct_view_weight(scene_, *light, hit->p, hit->n, camera_ray.o, /*for_camera=*/true);
             l += beta * le * (w / r_u.average());
@@ -206,7 +209,8 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
                         terminated = true;
                         return false;
                     }
-                    if (u < p_absorb + p_scatter) {
+                    // A homogeneous medium has no null collisions (σ_maj = σ_t; rounding must not make one).
+                    if (u < p_absorb + p_scatter || medium->is_homogeneous()) {
                         if (max_depth_ >= 0 && depth >= max_depth_) {
                             terminated = true;
                             return false;
