@@ -144,7 +144,12 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
     const int ch = path.channel;
     // Path space is split with light tracing only where it can splat: camera samples on the film (a filter
     // wider than half a pixel puts border pixels' samples outside it).
-    const bool split = caustics_by_light_tracing_ && scene_.camera->pdf_we(camera_ray).dir.value > 0;
+    // (Asked only when a path finds an area light, which most do not.)
+    int on_film = -1;
+    auto split = [&] {
+        if (on_film < 0) on_film = scene_.camera->pdf_we(camera_ray).dir.value > 0 ? 1 : 0;
+        return on_film == 1;
+    };
     SampledSpectrum& beta = path.beta;
     SampledSpectrum& r_u = path.r_u;
     SampledSpectrum& r_l = path.r_l;
@@ -160,8 +165,10 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         if (le.is_black()) return;
         // A caustic (specular bounce before the light, non-specular first vertex) is light tracing's, for
         // film positions light tracing can splat to.
-        if (split && hit && specular_bounce && depth > 0 && first_vertex_non_specular) return;
-        if (depth == 0 && split && hit) {
+        if (caustics_by_light_tracing_ && hit && specular_bounce && depth > 0 && first_vertex_non_specular &&
+            split())
+            return;
+        if (depth == 0 && caustics_by_light_tracing_ && hit && split()) {
             // A light seen directly: weighed against light tracing's view of it (volpath_caustics.h).
             float w = direct_view_weight(scene_, *light, hit->p, hit->n, camera_ray.o, /*for_camera=*/true);
             l += beta * le * (w / r_u.average());
