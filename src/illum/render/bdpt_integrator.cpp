@@ -185,14 +185,11 @@ BDPTIntegrator::BDPTIntegrator(const Scene& scene, int max_depth)
 RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
     const int w = scene_.width, h = scene_.height;
     const std::size_t pixels = std::size_t(w) * h;
-    int threads =
-        options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    int threads = render_threads(options);
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
     tbb::task_arena arena(threads);
 
-    auto kind = parse_sampler_kind(options.sampler);
-    if (!kind) throw Error("unknown sampler \"" + options.sampler + "\" (use sobol or independent)");
-    Sampler prototype(*kind, options.spp > 0 ? options.spp : 1, options.seed);
+    Sampler prototype(render_sampler_kind(options), options.spp > 0 ? options.spp : 1, options.seed);
     tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });
     tbb::enumerable_thread_specific<Subpaths> storage([&] {
         Subpaths sp;

@@ -30,21 +30,28 @@ std::vector<Tile> make_tiles(int w, int h, int size) {
 
 } // namespace
 
+int render_threads(const RenderOptions& options) {
+    return options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+SamplerKind render_sampler_kind(const RenderOptions& options) {
+    std::optional<SamplerKind> kind = parse_sampler_kind(options.sampler);
+    if (!kind) throw Error("unknown sampler \"" + options.sampler + "\" (use sobol or independent)");
+    return *kind;
+}
+
 RenderResult render(const Scene& scene, const Integrator& integrator, const RenderOptions& options) {
     if (options.spp <= 0 && options.time_budget <= 0) throw Error("samples per pixel must be positive");
     if (auto* whole = dynamic_cast<const WholeImageIntegrator*>(&integrator))
         return whole->render_image(options);
     const int w = scene.width, h = scene.height;
-    int threads =
-        options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    int threads = render_threads(options);
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
     tbb::task_arena arena(threads);
 
     Film film(w, h);
     std::vector<Tile> tiles = make_tiles(w, h, options.tile_size);
-    auto kind = parse_sampler_kind(options.sampler);
-    if (!kind) throw Error("unknown sampler \"" + options.sampler + "\" (use sobol or independent)");
-    Sampler prototype(*kind, options.spp > 0 ? options.spp : 1, options.seed);
+    Sampler prototype(render_sampler_kind(options), options.spp > 0 ? options.spp : 1, options.seed);
     tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });
     std::atomic<std::uint64_t> nonfinite{0};
     const bool reject_negative = !integrator.signed_values();

@@ -45,6 +45,11 @@ public:
     Radiance3 estimate(const Ray&, ThreadContext&) const override { return {}; }
 };
 
+// What every render loop derives from the options: the worker threads (0 asks for all the hardware's) and
+// the sampler kind (an unknown name throws illum::Error naming the choices).
+int render_threads(const RenderOptions& options);
+SamplerKind render_sampler_kind(const RenderOptions& options);
+
 RenderResult render(const Scene& scene, const Integrator& integrator, const RenderOptions& options);
 
 } // namespace illum

@@ -397,8 +397,7 @@ RenderResult SppmRender::run(SppmStats* stats) {
     pixels_ = std::size_t(w_) * std::size_t(h_);
     if (pixels_ == 0) throw Error("the film has no pixels");
     spectral_ = options_.spectral;
-    int threads =
-        options_.threads > 0 ? options_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    int threads = render_threads(options_);
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
     tbb::task_arena arena(threads);
 
@@ -419,10 +418,9 @@ RenderResult SppmRender::run(SppmStats* stats) {
     chunk_phi_.assign(std::size_t(chunks_) * pixels_, Color3());
     chunk_m_.assign(std::size_t(chunks_) * pixels_, 0u);
 
-    auto kind = parse_sampler_kind(options_.sampler);
-    if (!kind) throw Error("unknown sampler \"" + options_.sampler + "\" (use sobol or independent)");
+    const SamplerKind kind = render_sampler_kind(options_);
     const int iterations_asked = options_.spp > 0 ? options_.spp : 1;
-    Sampler camera_prototype(*kind, iterations_asked, options_.seed);
+    Sampler camera_prototype(kind, iterations_asked, options_.seed);
     Sampler photon_prototype(SamplerKind::sobol, 1, hash(options_.seed, settings_.seed));
     camera_threads_ = std::make_unique<tbb::enumerable_thread_specific<CameraThread>>(
         [&] { return CameraThread(camera_prototype); });
