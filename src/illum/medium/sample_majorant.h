@@ -8,12 +8,29 @@
 
 #include <cfloat>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "illum/math/rng.h"
 #include "illum/medium/medium.h"
 
 namespace illum {
+
+// What happens at a tentative collision, chosen in the sampling channel with probabilities σ_a/σ_maj,
+// σ_s/σ_maj and the rest (null). A homogeneous medium has no null collisions (σ_maj = σ_t), so rounding must
+// not make one there.
+enum class MediumEvent { Absorb, Scatter, Null };
+inline MediumEvent choose_medium_event(const MediumProperties& mp, const SampledSpectrum& sigma_maj,
+                                       int channel, float u, bool homogeneous) {
+    float p_absorb = mp.sigma_a[channel] / sigma_maj[channel];
+    if (u < p_absorb) return MediumEvent::Absorb;
+    if (homogeneous || u < p_absorb + mp.sigma_s[channel] / sigma_maj[channel]) return MediumEvent::Scatter;
+    return MediumEvent::Null;
+}
+// The null-collision coefficient σ_n = σ_maj - σ_a - σ_s (clamped at 0 against rounding).
+inline SampledSpectrum null_coefficient(const MediumProperties& mp, const SampledSpectrum& sigma_maj) {
+    return clamp(sigma_maj - mp.sigma_a - mp.sigma_s, 0.0f, std::numeric_limits<float>::infinity());
+}
 
 // `cache` (optional) holds a homogeneous medium's properties for the path.
 template <class Callback>

@@ -133,14 +133,13 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
             SampledSpectrum t_maj = sample_t_maj(
                 ray, found ? hit.t : kInfinity, sampler.get_1d(), rng, tc.lambda, ch,
                 [&](Point3f p, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
-                    float u = rng.uniform_float();
-                    float p_absorb = mp.sigma_a[ch] / sigma_maj[ch],
-                          p_scatter = mp.sigma_s[ch] / sigma_maj[ch];
-                    if (u < p_absorb) {
+                    MediumEvent event =
+                        choose_medium_event(mp, sigma_maj, ch, rng.uniform_float(), medium->is_homogeneous());
+                    if (event == MediumEvent::Absorb) {
                         terminated = true;
                         return false;
                     }
-                    if (u < p_absorb + p_scatter || medium->is_homogeneous()) { // no null collisions there
+                    if (event == MediumEvent::Scatter) {
                         // A medium vertex is not specular: with caustics only, a particle scattered first
                         // in a medium is the camera paths' to find.
                         if (caustics_only_ && first_vertex) {
@@ -166,7 +165,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
                         scattered = true;
                         return false;
                     }
-                    SampledSpectrum sigma_n = clamp(sigma_maj - mp.sigma_a - mp.sigma_s, 0.0f, kInfinity);
+                    SampledSpectrum sigma_n = null_coefficient(mp, sigma_maj);
                     float pdf = t_m[ch] * sigma_n[ch];
                     if (pdf == 0) {
                         terminated = true;

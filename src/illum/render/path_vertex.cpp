@@ -183,14 +183,13 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
             SampledSpectrum t_maj = sample_t_maj(
                 ray, found ? hit.t : kInfinity, sampler.get_1d(), ctx.rng, tc.lambda, ch,
                 [&](Point3f p, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
-                    float u = ctx.rng.uniform_float();
-                    float p_absorb = mp.sigma_a[ch] / sigma_maj[ch],
-                          p_scatter = mp.sigma_s[ch] / sigma_maj[ch];
-                    if (u < p_absorb) {
+                    MediumEvent event = choose_medium_event(mp, sigma_maj, ch, ctx.rng.uniform_float(),
+                                                            medium->is_homogeneous());
+                    if (event == MediumEvent::Absorb) {
                         terminated = true;
                         return false;
                     }
-                    if (u < p_absorb + p_scatter) {
+                    if (event == MediumEvent::Scatter) {
                         // A real scattering event: a medium vertex.
                         float pdf = t_m[ch] * mp.sigma_s[ch];
                         beta *= t_m * mp.sigma_s / pdf;
@@ -223,7 +222,7 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
                         scattered = true;
                         return false;
                     }
-                    SampledSpectrum sigma_n = clamp(sigma_maj - mp.sigma_a - mp.sigma_s, 0.0f, kInfinity);
+                    SampledSpectrum sigma_n = null_coefficient(mp, sigma_maj);
                     float pdf = t_m[ch] * sigma_n[ch];
                     if (pdf == 0) {
                         terminated = true;

@@ -10,8 +10,6 @@ namespace illum {
 
 namespace {
 
-SampledSpectrum clamp_zero(SampledSpectrum v) { return clamp(v, 0.0f, kInfinity); }
-
 // Roulette for ratio tracking once the estimate is small (PBR 4th ed. §14.2.2): kept with probability 1/4.
 constexpr float kShadowRouletteBelow = 0.05f;
 constexpr float kShadowKeep = 0.25f;
@@ -46,7 +44,7 @@ SampledSpectrum shadow_transmittance(const Scene& scene, Ray ray, const ShadowTa
                     [&](Point3f, const MediumProperties& mp, SampledSpectrum sigma_maj, SampledSpectrum t_m) {
                         // Ratio tracking: each tentative collision weighs by σ_n / σ_maj (PBR 4th ed.
                         // §14.2.2).
-                        SampledSpectrum sigma_n = clamp_zero(sigma_maj - mp.sigma_a - mp.sigma_s);
+                        SampledSpectrum sigma_n = null_coefficient(mp, sigma_maj);
                         float pdf = t_m[ch] * sigma_maj[ch];
                         t_ray *= t_m * sigma_n / pdf;
                         *r_l *= t_m * sigma_maj / pdf;

@@ -14,8 +14,6 @@ namespace illum {
 
 namespace {
 
-SampledSpectrum clamp_zero(SampledSpectrum v) { return clamp(v, 0.0f, kInfinity); }
-
 // Surfaces without material a path may cross (a guard against a degenerate scene of nested interfaces).
 constexpr int kMaxCrossings = 1024;
 
@@ -209,15 +207,13 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
                         float avg = r_e.average();
                         if (avg > 0) l += beta * t_m / pdf * mp.sigma_a * mp.le / avg;
                     }
-                    float p_absorb = mp.sigma_a[ch] / sigma_maj[ch];
-                    float p_scatter = mp.sigma_s[ch] / sigma_maj[ch];
-                    float u = path.rng.uniform_float();
-                    if (u < p_absorb) {
+                    MediumEvent event = choose_medium_event(mp, sigma_maj, ch, path.rng.uniform_float(),
+                                                            medium->is_homogeneous());
+                    if (event == MediumEvent::Absorb) {
                         terminated = true;
                         return false;
                     }
-                    // A homogeneous medium has no null collisions (σ_maj = σ_t; rounding must not make one).
-                    if (u < p_absorb + p_scatter || medium->is_homogeneous()) {
+                    if (event == MediumEvent::Scatter) {
                         if (max_depth_ >= 0 && depth >= max_depth_) {
                             terminated = true;
                             return false;
@@ -256,7 +252,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
                         return false;
                     }
                     // A null collision: the walk goes on.
-                    SampledSpectrum sigma_n = clamp_zero(sigma_maj - mp.sigma_a - mp.sigma_s);
+                    SampledSpectrum sigma_n = null_coefficient(mp, sigma_maj);
                     float pdf = t_m[ch] * sigma_n[ch];
                     if (pdf == 0) {
                         beta = SampledSpectrum(0.0f);
