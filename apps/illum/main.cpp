@@ -5,9 +5,28 @@
 #include <fmt/core.h>
 
 #include "commands.h"
+#include "mpi_run.h"
 #include "illum/util/error.h"
 
+namespace {
+
+// Prints an error and returns `code`; in a job of several ranks, where the others may be waiting for this
+// one, names the rank and ends the whole job with that code.
+int fail(const char* what, int code) {
+    using illum::cli::MpiRun;
+    if (MpiRun::size() <= 1) {
+        fmt::print(stderr, "error: {}\n", what);
+        return code;
+    }
+    fmt::print(stderr, "error: rank {} of {}: {}\n", MpiRun::rank(), MpiRun::size(), what);
+    MpiRun::abort(code);
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
+    illum::cli::MpiRun mpi(&argc, &argv); // under mpirun: this process is one rank of a job
+    const bool lead = illum::cli::MpiRun::rank() == 0;
     CLI::App app{"illum: a physically based renderer and reflectance toolkit"};
     app.set_version_flag("--version", "illum " ILLUM_VERSION);
     app.require_subcommand(0, 1);
@@ -33,14 +52,14 @@ int main(int argc, char** argv) {
     } catch (const CLI::RuntimeError& e) {
         return e.get_exit_code(); // a command that reports its own failure (a failed audit)
     } catch (const CLI::ParseError& e) {
-        fmt::print(stderr, "error: {}\n", e.what());
+        if (lead) fmt::print(stderr, "error: {}\n", e.what()); // every rank has the same arguments
+        return 2;
+    } catch (const illum::cli::ReportedFailure&) {
         return 2;
     } catch (const illum::Error& e) {
-        fmt::print(stderr, "error: {}\n", e.what());
-        return 2;
+        return fail(e.what(), 2);
     } catch (const std::exception& e) {
-        fmt::print(stderr, "error: {}\n", e.what());
-        return 1;
+        return fail(e.what(), 1);
     }
     return 0;
 }

@@ -1,10 +1,12 @@
 // `illum render [SCENE] [-o OUT.{exr,pfm,hdr,png}]...`: renders a pbrt-v4 scene, or the built-in Cornell
 // box when no scene is named.
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fmt/core.h>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
@@ -14,6 +16,7 @@
 #include "illum/render/renderer.h"
 #include "illum/scene/build.h"
 #include "illum/util/error.h"
+#include "mpi_run.h"
 #include "scene_loading.h"
 
 namespace illum::cli {
@@ -37,6 +40,7 @@ struct RenderArgs {
     bool quiet = false;
     bool strict = false;
     bool spectral = false;
+    std::string share; // "R/N": render rank R's share of an N-rank job alone
 };
 
 void check_output_folder_only(const std::string& path) {
@@ -62,8 +66,16 @@ void check_output(const std::string& path) {
         throw Error(fmt::format("cannot write \"{}\": it is a directory", path));
 }
 
+// Where a run's time went, for the stats: reading and building the scene (every rank does it), the
+// group's communication (its sums and broadcasts, including waiting for the slowest rank), the ranks.
+struct RenderTimes {
+    double setup_seconds = 0;
+    double communication_seconds = 0;
+    int ranks = 1;
+};
+
 void write_stats(const std::string& path, const RenderArgs& args, const Scene& scene, const RenderResult& r,
-                 const std::string& integrator) {
+                 const std::string& integrator, const RenderTimes& times) {
     nlohmann::json j;
     j["version"] = ILLUM_VERSION;
     j["scene"] = args.scene.empty() ? "<built-in cornell-box>" : args.scene;
@@ -76,6 +88,9 @@ void write_stats(const std::string& path, const RenderArgs& args, const Scene& s
     j["samples_per_second"] = r.seconds > 0 ? r.samples / r.seconds : 0.0;
     j["rays_per_second"] = r.seconds > 0 ? r.rays / r.seconds : 0.0;
     j["threads"] = r.threads;
+    j["ranks"] = times.ranks;
+    j["setup_seconds"] = times.setup_seconds;
+    j["communication_seconds"] = times.communication_seconds;
     j["seed"] = args.seed;
     j["nonfinite_samples"] = r.nonfinite_samples;
     j["mode"] = args.spectral ? "spectral" : "rgb";
@@ -90,12 +105,37 @@ void write_stats(const std::string& path, const RenderArgs& args, const Scene& s
     std::filesystem::rename(tmp, path);
 }
 
-void run(const RenderArgs& args) {
+// "R/N" of --share.
+std::pair<int, int> parse_share(const std::string& s) {
+    int r = -1, n = 0;
+    char slash = 0, extra = 0;
+    if (std::sscanf(s.c_str(), "%d%c%d%c", &r, &slash, &n, &extra) != 3 || slash != '/' || n < 1 || r < 0 ||
+        r >= n)
+        throw Error("--share \"" + s + "\" is not RANK/RANKS with 0 <= RANK < RANKS");
+    return {r, n};
+}
+
+// Everything before the render: may fail on one rank of a job only (its node's copy of the scene), so the
+// ranks agree on it before any of them starts (MpiRun::agree).
+struct Prepared {
+    std::unique_ptr<Scene> scene;
+    std::unique_ptr<Integrator> integrator;
+    std::string integrator_name;
+    std::vector<std::string> outputs;
+    WriteOptions write_options;
+    RenderOptions options;
+};
+
+Prepared prepare(const RenderArgs& args, bool lead, bool quiet) {
+    Prepared p;
     auto tonemap = tonemap_from_string(args.tonemap);
     if (!tonemap)
         throw Error(fmt::format("unknown tone map \"{}\" (use clamp, reinhard or aces)", args.tonemap));
-    for (const auto& o : args.outputs) check_output(o);
-    if (!args.stats.empty()) check_output_folder_only(args.stats);
+    // Only rank 0 writes, so only its outputs are checked (the folders may exist on its node alone).
+    if (lead) {
+        for (const auto& o : args.outputs) check_output(o);
+        if (!args.stats.empty()) check_output_folder_only(args.stats);
+    }
 
     SceneDesc desc = load_scene_desc(args.scene, args.strict);
     if (!args.resolution.empty()) {
@@ -104,48 +144,81 @@ void run(const RenderArgs& args) {
     }
     BuildOptions build_options;
     build_options.strict = args.strict;
-    std::unique_ptr<Scene> scene = build_scene(desc, build_options);
-    if (!args.quiet) print_warnings(scene->warnings);
+    p.scene = build_scene(desc, build_options);
+    if (!quiet) print_warnings(p.scene->warnings);
 
-    std::vector<std::string> outputs = args.outputs;
-    if (outputs.empty()) {
-        std::string name = scene->request.output.empty() ? "illum.exr" : scene->request.output;
+    p.outputs = args.outputs;
+    if (p.outputs.empty()) {
+        std::string name = p.scene->request.output.empty() ? "illum.exr" : p.scene->request.output;
         if (!is_supported_output_extension(name))
             name = std::filesystem::path(name).replace_extension(".exr").string();
         // The film's filename is relative to where illum runs, as in pbrt.
-        check_output(name);
-        outputs.push_back(name);
+        if (lead) check_output(name);
+        p.outputs.push_back(name);
     }
 
-    std::string integrator_name = args.integrator.empty() ? scene->request.integrator : args.integrator;
-    int max_depth = args.max_depth == -2 ? scene->request.max_depth : args.max_depth;
-    auto integrator = make_integrator(integrator_name, *scene, max_depth);
+    p.integrator_name = args.integrator.empty() ? p.scene->request.integrator : args.integrator;
+    int max_depth = args.max_depth == -2 ? p.scene->request.max_depth : args.max_depth;
+    p.integrator = make_integrator(p.integrator_name, *p.scene, max_depth);
 
-    RenderOptions options;
-    options.spp = args.spp > 0 ? args.spp : scene->request.spp;
-    options.time_budget = args.time;
-    options.threads = args.threads;
-    options.seed = args.seed;
-    options.sampler = args.sampler.empty() ? scene->request.sampler : args.sampler;
-    options.quiet = args.quiet;
-    options.spectral = args.spectral;
-    RenderResult result = render(*scene, *integrator, options);
+    p.options.spp = args.spp > 0 ? args.spp : p.scene->request.spp;
+    p.options.time_budget = args.time;
+    p.options.threads = args.threads;
+    p.options.seed = args.seed;
+    p.options.sampler = args.sampler.empty() ? p.scene->request.sampler : args.sampler;
+    p.options.quiet = quiet;
+    p.options.spectral = args.spectral;
+    p.write_options.exposure_stops = args.exposure;
+    p.write_options.tonemap = *tonemap;
+    return p;
+}
+
+void run(const RenderArgs& args) {
+    const auto start = std::chrono::steady_clock::now();
+    RenderGroup* group = MpiRun::group();
+    std::optional<SoloShare> solo;
+    if (!args.share.empty()) {
+        if (group) throw Error("--share renders one rank's share alone: it cannot be used under mpirun");
+        auto [r, n] = parse_share(args.share);
+        solo.emplace(r, n);
+        group = &*solo;
+    }
+    const bool lead = !MpiRun::group() || MpiRun::rank() == 0;
+    const bool quiet = args.quiet || !lead; // rank 0 speaks for the job
+
+    Prepared p;
+    std::string error;
+    try {
+        p = prepare(args, lead, quiet);
+        p.options.group = group;
+    } catch (const Error& e) {
+        if (!MpiRun::group()) throw;
+        error = e.what();
+        if (error.empty()) error = "failed";
+    }
+    MpiRun::agree(error);
+    const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    RenderResult result = render(*p.scene, *p.integrator, p.options);
+    if (!lead) return;
     if (result.nonfinite_samples > 0 && !args.quiet)
         fmt::print(stderr, "warning: {} samples were NaN, infinite or negative and were dropped\n",
                    result.nonfinite_samples);
 
-    WriteOptions wo;
-    wo.exposure_stops = args.exposure;
-    wo.tonemap = *tonemap;
-    for (const auto& o : outputs) {
-        write_image(result.image, o, wo);
+    for (const auto& o : p.outputs) {
+        write_image(result.image, o, p.write_options);
         if (!args.quiet) fmt::print(stderr, "wrote {}\n", o);
     }
-    if (!args.stats.empty()) write_stats(args.stats, args, *scene, result, integrator_name);
+    const int ranks = group ? group->size() : 1;
+    if (!args.stats.empty()) {
+        RenderTimes times{setup_seconds, group ? group->communication_seconds : 0.0, ranks};
+        write_stats(args.stats, args, *p.scene, result, p.integrator_name, times);
+    }
     if (!args.quiet)
-        fmt::print(stderr, "{}x{}, {} spp in {:.2f} s: {:.3g} samples/s, {:.3g} rays/s on {} threads\n",
-                   scene->width, scene->height, result.spp, result.seconds, result.samples / result.seconds,
-                   result.rays / result.seconds, result.threads);
+        fmt::print(stderr, "{}x{}, {} spp in {:.2f} s: {:.3g} samples/s, {:.3g} rays/s on {}{} threads\n",
+                   p.scene->width, p.scene->height, result.spp, result.seconds, result.samples / result.seconds,
+                   result.rays / result.seconds, ranks > 1 ? fmt::format("{} ranks of ", ranks) : "",
+                   result.threads);
 }
 
 } // namespace
@@ -179,6 +252,9 @@ void add_render_command(CLI::App& app) {
     cmd->add_flag("--spectral", args->spectral,
                   "Render with four sampled wavelengths per camera sample (hero wavelength sampling) instead "
                   "of RGB");
+    cmd->add_option("--share", args->share,
+                    "Render only share RANK/RANKS of the samples, as that rank of an mpirun job would (to time "
+                    "a large job's ranks one by one; the image is that share's alone)");
     cmd->callback([args] { run(*args); });
 }
 

@@ -13,44 +13,17 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "cli_support.h"
 #include "illum/image/image_io.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-    int exit_code = -1;
-    std::string out, err;
-};
-
-// Runs illum with the arguments (a shell-quoted string) and captures stdout and stderr.
-CliRun illum(const std::string& args, const fs::path& dir) {
-    fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    std::string cmd = "cd '" + dir.string() + "' && '" + ILLUM_CLI_PATH + "' " + args + " > '" +
-                      out.string() + "' 2> '" + err.string() + "' < /dev/null";
-    int status = std::system(cmd.c_str());
-    CliRun r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    auto slurp = [](const fs::path& p) {
-        std::ifstream in(p);
-        std::stringstream ss;
-        ss << in.rdbuf();
-        return ss.str();
-    };
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-}
-
-std::string read_bytes(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-void write_text(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+using cli_support::CliRun;
+using cli_support::illum;
+using cli_support::read_bytes;
+using cli_support::write_text;
 
 int count_lines(const std::string& s) {
     int n = 0;

@@ -10,21 +10,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cli_support.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandRun {
-    int exit_code = -1;
-    std::string err;
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+using cli_support::read_bytes;
 
 class PhotonsCli : public testing::Test {
 protected:
@@ -46,13 +38,7 @@ Shape "trianglemesh" "point3 P" [-3 -3 0 3 -3 0 3 3 0 -3 3 0] "integer indices" 
 )";
     }
     void TearDown() override { fs::remove_all(dir_); }
-    CommandRun illum(const std::string& args) {
-        fs::path err = dir_ / "stderr.txt";
-        std::string cmd = "cd '" + dir_.string() + "' && '" + ILLUM_CLI_PATH + "' " + args +
-                          " > /dev/null 2> '" + err.string() + "' < /dev/null";
-        int status = std::system(cmd.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(err)};
-    }
+    cli_support::CliRun illum(const std::string& args) { return cli_support::illum(args, dir_); }
     fs::path dir_;
 };
 
@@ -60,9 +46,9 @@ Shape "trianglemesh" "point3 P" [-3 -3 0 3 -3 0 3 3 0 -3 3 0] "integer indices" 
 // (nine floats and a byte). A 6 × 6 floor 2.5 below a point light subtends 4 asin(9 / 15.25) = 2.52 sr, 20%
 // of the sphere: ~200 of 1000 photons land, once (what the floor reflects escapes upwards).
 TEST_F(PhotonsCli, WritesAPlyPointCloud) {
-    CommandRun r = illum("photons scene.pbrt -o photons.ply --count 1000");
+    cli_support::CliRun r = illum("photons scene.pbrt -o photons.ply --count 1000");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    std::string ply = slurp(dir_ / "photons.ply");
+    std::string ply = read_bytes(dir_ / "photons.ply");
     ASSERT_EQ(ply.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u);
     auto at = ply.find("element vertex ");
     ASSERT_NE(at, std::string::npos);
@@ -77,17 +63,17 @@ TEST_F(PhotonsCli, WritesAPlyPointCloud) {
 }
 
 TEST_F(PhotonsCli, RefusesAnotherExtension) {
-    CommandRun r = illum("photons scene.pbrt -o photons.txt");
+    cli_support::CliRun r = illum("photons scene.pbrt -o photons.txt");
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find(".ply"), std::string::npos) << r.err;
 }
 
 TEST_F(PhotonsCli, SceneIntegratorSppmRendersWithoutFallback) {
-    CommandRun r = illum("render scene.pbrt -o out.exr");
+    cli_support::CliRun r = illum("render scene.pbrt -o out.exr");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("rendered with \"path\""), std::string::npos) << r.err;
     EXPECT_TRUE(fs::exists(dir_ / "out.exr"));
-    CommandRun r2 = illum("render scene.pbrt --integrator sppm --spp 3 -o out2.exr");
+    cli_support::CliRun r2 = illum("render scene.pbrt --integrator sppm --spp 3 -o out2.exr");
     ASSERT_EQ(r2.exit_code, 0) << r2.err;
 }
 

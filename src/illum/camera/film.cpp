@@ -6,11 +6,8 @@ Image Film::resolve() const {
     Image img(width_, height_);
     for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x) {
-            const Pixel& px = pixels_[std::size_t(y) * width_ + x];
-            if (px.weight > 0) {
-                img(x, y) = Color3(float(px.sum[0] / px.weight), float(px.sum[1] / px.weight),
-                                   float(px.sum[2] / px.weight));
-            }
+            const double* px = &sums_[(std::size_t(y) * width_ + x) * 4];
+            if (px[3] > 0) img(x, y) = Color3(float(px[0] / px[3]), float(px[1] / px[3]), float(px[2] / px[3]));
         }
     return img;
 }

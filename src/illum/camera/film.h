@@ -4,6 +4,7 @@
 // needed.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "illum/image/image.h"
@@ -13,29 +14,28 @@ namespace illum {
 
 class Film {
 public:
-    Film(int width, int height) : width_(width), height_(height), pixels_(std::size_t(width) * height) {}
+    Film(int width, int height) : width_(width), height_(height), sums_(std::size_t(width) * height * 4, 0.0) {}
 
     int width() const { return width_; }
     int height() const { return height_; }
 
     // l: the sample's value in the output colour space (the sensor's conversion of its radiance).
     void add_sample(int x, int y, Color3 l, float weight) {
-        Pixel& px = pixels_[std::size_t(y) * width_ + x];
-        for (int c = 0; c < 3; ++c) px.sum[c] += double(l[c]) * weight;
-        px.weight += weight;
+        double* px = &sums_[(std::size_t(y) * width_ + x) * 4];
+        for (int c = 0; c < 3; ++c) px[c] += double(l[c]) * weight;
+        px[3] += weight;
     }
     // The image of the mean radiance: its Color3 pixels hold W m^-2 sr^-1 (the output boundary, where the
     // unit leaves the type; EXR and PFM keep it linear).
     Image resolve() const;
-    void clear() { std::fill(pixels_.begin(), pixels_.end(), Pixel{}); }
+    void clear() { std::fill(sums_.begin(), sums_.end(), 0.0); }
+    // The raw sums, four doubles a pixel (Σ w L as rgb, then Σ w), for adding the films of several
+    // processes.
+    std::span<double> accumulators() { return sums_; }
 
 private:
-    struct Pixel {
-        double sum[3] = {0, 0, 0};
-        double weight = 0;
-    };
     int width_, height_;
-    std::vector<Pixel> pixels_;
+    std::vector<double> sums_;
 };
 
 } // namespace illum

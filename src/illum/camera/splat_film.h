@@ -8,6 +8,7 @@
 // thread at a time (light tracing applies its splats in a fixed order).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "illum/camera/filter.h"
@@ -32,6 +33,8 @@ public:
     Image resolve(double particles_per_pixel) const;
     // ∫ f over its support (midpoint rule on a fine grid: exact for the box and the tent).
     double filter_integral() const { return filter_integral_; }
+    // The raw sums (rgb per pixel), for adding films of several processes.
+    std::span<double> accumulators() { return sums_; }
     std::size_t bytes() const { return sums_.size() * sizeof(double); }
 
 private:

@@ -307,8 +307,9 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
 
     std::uint64_t nonfinite = 0;
     const bool timed = options.time_budget > 0;
-    Progress progress("render", timed ? 0 : pixels * std::uint64_t(options.spp), "samples", options.quiet);
-    int spp = run_chunked_schedule<ChunkOutput>(
+    Progress progress("render", timed ? 0 : pixels * std::uint64_t(sample_share(options.group).count(options.spp)),
+                      "samples", options.quiet);
+    int passes = run_chunked_schedule<ChunkOutput>(
         options, pixels, arena, progress,
         [&](ChunkOutput& out, int s, std::size_t p0, std::size_t p1) {
             ThreadContext& tc = contexts.local();
@@ -332,14 +333,15 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         });
 
     RenderResult r;
-    r.seconds = progress.elapsed_seconds();
-    r.image = film.resolve();
-    Image splats = splat_film.resolve(spp);
-    for (std::size_t i = 0; i < pixels; ++i) r.image.data()[i] += splats.data()[i];
-    r.spp = spp;
-    r.samples = pixels * std::uint64_t(spp);
     for (auto& tc : contexts) r.rays += tc.rays;
     r.nonfinite_samples = nonfinite;
+    r.spp = sum_over_group(options, passes, film.accumulators(), r);
+    if (options.group) options.group->sum(splat_film.accumulators(), false);
+    r.seconds = progress.elapsed_seconds();
+    r.image = film.resolve();
+    Image splats = splat_film.resolve(r.spp);
+    for (std::size_t i = 0; i < pixels; ++i) r.image.data()[i] += splats.data()[i];
+    r.samples = pixels * std::uint64_t(r.spp);
     r.threads = threads;
     return r;
 }

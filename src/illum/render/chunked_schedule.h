@@ -20,13 +20,14 @@ namespace illum {
 inline constexpr std::size_t kChunkPixels = 1024;
 inline constexpr std::size_t kWaveChunks = 64;
 
-// trace(out, sample, p0, p1) traces pixels [p0, p1) at one sample index into `out` (cleared by it);
-// apply(out) adds an output to the film. Runs options.spp passes, or whole passes until
-// options.time_budget; returns the passes taken. `progress` counts pixel samples.
+// trace(out, sample, p0, p1) traces pixels [p0, p1) at one (global) sample index into `out` (cleared by
+// it); apply(out) adds an output to the film. Runs this process's share of options.spp passes, or whole
+// passes until options.time_budget (run_passes); returns the passes taken. `progress` counts pixel samples.
 template <class Output, class Trace, class Apply>
 int run_chunked_schedule(const RenderOptions& options, std::size_t pixels, tbb::task_arena& arena,
                          Progress& progress, Trace&& trace, Apply&& apply) {
     const std::size_t chunks_per_pass = (pixels + kChunkPixels - 1) / kChunkPixels;
+    const SampleShare share = sample_share(options.group);
     struct Wave {
         std::vector<Output> outputs = std::vector<Output>(kWaveChunks);
         std::size_t chunks = 0;
@@ -49,7 +50,7 @@ int run_chunked_schedule(const RenderOptions& options, std::size_t pixels, tbb::
                     std::size_t g = first + k;
                     std::size_t p0 = (g % chunks_per_pass) * kChunkPixels,
                                 p1 = std::min(pixels, p0 + kChunkPixels);
-                    trace(wv.outputs[k], int(g / chunks_per_pass), p0, p1);
+                    trace(wv.outputs[k], share.index(int(g / chunks_per_pass)), p0, p1);
                     progress.add(p1 - p0);
                 });
                 previous.wait();
@@ -57,19 +58,12 @@ int run_chunked_schedule(const RenderOptions& options, std::size_t pixels, tbb::
         }
         apply_wave(waves[1 - cur]);
     };
-    int spp = 0;
-    if (options.time_budget > 0) {
-        do {
-            run(std::size_t(spp) * chunks_per_pass, std::size_t(spp + 1) * chunks_per_pass);
-            ++spp;
-            progress.set_fraction(progress.elapsed_seconds() / options.time_budget);
-        } while (progress.elapsed_seconds() < options.time_budget);
-    } else {
-        run(0, std::size_t(options.spp) * chunks_per_pass);
-        spp = options.spp;
-    }
+    // This process's passes k0..k1-1 are its chunks [k0 · chunks_per_pass, k1 · chunks_per_pass).
+    int passes = run_passes(options, progress, [&](int k0, int k1) {
+        run(std::size_t(k0) * chunks_per_pass, std::size_t(k1) * chunks_per_pass);
+    });
     progress.finish();
-    return spp;
+    return passes;
 }
 
 } // namespace illum

@@ -249,8 +249,9 @@ RenderResult LightPathIntegrator::render_image(const RenderOptions& options) con
     };
     std::uint64_t nonfinite = 0;
     const bool timed = options.time_budget > 0;
-    Progress progress("render", timed ? 0 : pixels * std::uint64_t(options.spp), "samples", options.quiet);
-    int spp = run_chunked_schedule<ChunkSplats>(
+    Progress progress("render", timed ? 0 : pixels * std::uint64_t(sample_share(options.group).count(options.spp)),
+                      "samples", options.quiet);
+    int passes = run_chunked_schedule<ChunkSplats>(
         options, pixels, arena, progress,
         [&](ChunkSplats& out, int s, std::size_t p0, std::size_t p1) {
             ThreadContext& tc = contexts.local();
@@ -268,12 +269,12 @@ RenderResult LightPathIntegrator::render_image(const RenderOptions& options) con
         });
 
     RenderResult r;
-    r.seconds = progress.elapsed_seconds();
-    r.image = film.resolve(spp);
-    r.spp = spp;
-    r.samples = pixels * std::uint64_t(spp);
     for (auto& tc : contexts) r.rays += tc.rays;
     r.nonfinite_samples = nonfinite;
+    r.spp = sum_over_group(options, passes, film.accumulators(), r);
+    r.seconds = progress.elapsed_seconds();
+    r.image = film.resolve(r.spp);
+    r.samples = pixels * std::uint64_t(r.spp);
     r.threads = threads;
     return r;
 }

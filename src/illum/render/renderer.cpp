@@ -40,6 +40,15 @@ SamplerKind render_sampler_kind(const RenderOptions& options) {
     return *kind;
 }
 
+int sum_over_group(const RenderOptions& options, int passes, std::span<double> accumulators, RenderResult& r) {
+    RenderGroup* group = options.group;
+    if (!group) return passes;
+    group->sum(accumulators, false);
+    r.rays = sum_counter(group, r.rays);
+    r.nonfinite_samples = sum_counter(group, r.nonfinite_samples);
+    return options.time_budget > 0 ? passes * group->size() : options.spp;
+}
+
 RenderResult render(const Scene& scene, const Integrator& integrator, const RenderOptions& options) {
     if (options.spp <= 0 && options.time_budget <= 0) throw Error("samples per pixel must be positive");
     if (auto* whole = dynamic_cast<const WholeImageIntegrator*>(&integrator))
@@ -62,10 +71,12 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
 
     const bool timed = options.time_budget > 0;
     std::uint64_t pixels = std::uint64_t(w) * h;
-    Progress progress("render", timed ? 0 : pixels * std::uint64_t(options.spp), "samples", options.quiet);
+    const SampleShare share = sample_share(options.group);
+    Progress progress("render", timed ? 0 : pixels * std::uint64_t(share.count(options.spp)), "samples",
+                      options.quiet);
 
-    // Renders samples [s0, s1) of every pixel.
-    auto pass = [&](int s0, int s1) {
+    // Renders this share's samples k0..k1-1 (global indices share.index(k)) of every pixel.
+    auto pass = [&](int k0, int k1) {
         arena.execute([&] {
             tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1), [&](const auto& range) {
                 ThreadContext& tc = contexts.local();
@@ -73,8 +84,8 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                     const Tile& t = tiles[ti];
                     for (int y = t.y0; y < t.y1; ++y)
                         for (int x = t.x0; x < t.x1; ++x)
-                            for (int s = s0; s < s1; ++s) {
-                                tc.sampler.start_pixel_sample({x, y}, s);
+                            for (int k = k0; k < k1; ++k) {
+                                tc.sampler.start_pixel_sample({x, y}, share.index(k));
                                 FilterSample fs = scene.filter->sample(tc.sampler.get_pixel_2d());
                                 Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
                                 Point2f u_lens = tc.sampler.get_2d();
@@ -97,33 +108,22 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                 Color3 c = radiometric ? scene.sensor.to_rgb(v, tc.lambda) : v.rgb();
                                 film.add_sample(x, y, c, fs.weight);
                             }
-                    progress.add(std::uint64_t(t.x1 - t.x0) * (t.y1 - t.y0) * (s1 - s0));
+                    progress.add(std::uint64_t(t.x1 - t.x0) * (t.y1 - t.y0) * (k1 - k0));
                 }
             });
         });
     };
 
-    int spp = 0;
-    if (timed) {
-        // Whole passes of one sample per pixel until the budget is spent.
-        do {
-            pass(spp, spp + 1);
-            ++spp;
-            progress.set_fraction(progress.elapsed_seconds() / options.time_budget);
-        } while (progress.elapsed_seconds() < options.time_budget);
-    } else {
-        pass(0, options.spp);
-        spp = options.spp;
-    }
+    const int passes = run_passes(options, progress, pass);
     progress.finish();
 
     RenderResult r;
-    r.seconds = progress.elapsed_seconds();
-    r.image = film.resolve();
-    r.spp = spp;
-    r.samples = pixels * std::uint64_t(spp);
     for (auto& tc : contexts) r.rays += tc.rays;
     r.nonfinite_samples = nonfinite;
+    r.spp = sum_over_group(options, passes, film.accumulators(), r);
+    r.seconds = progress.elapsed_seconds();
+    r.image = film.resolve();
+    r.samples = pixels * std::uint64_t(r.spp);
     r.threads = threads;
     return r;
 }

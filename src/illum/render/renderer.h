@@ -4,11 +4,14 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 
 #include "illum/image/image.h"
 #include "illum/render/integrator.h"
+#include "illum/render/render_group.h"
 #include "illum/render/scene.h"
+#include "illum/util/progress.h"
 
 namespace illum {
 
@@ -22,6 +25,8 @@ struct RenderOptions {
     int tile_size = 16;
     // Spectral mode: four sampled wavelengths per camera sample instead of RGB.
     bool spectral = false;
+    // Several processes rendering one image (render_group.h); null: this process renders every sample.
+    RenderGroup* group = nullptr;
 };
 
 struct RenderResult {
@@ -49,6 +54,33 @@ public:
 // the sampler kind (an unknown name throws illum::Error naming the choices).
 int render_threads(const RenderOptions& options);
 SamplerKind render_sampler_kind(const RenderOptions& options);
+
+// Runs a render loop's passes: pass(k0, k1) renders this process's samples k0..k1-1 (of its share,
+// render_group.h). Either all of the share's samples of options.spp at once, or, with a time budget,
+// passes of one sample per pixel until the budget is spent (on rank 0's clock in a group). Returns the
+// passes this process rendered.
+template <class Pass> int run_passes(const RenderOptions& options, Progress& progress, Pass&& pass) {
+    const SampleShare share = sample_share(options.group);
+    if (options.time_budget <= 0) {
+        int n = share.count(options.spp);
+        pass(0, n);
+        return n;
+    }
+    int k = 0;
+    bool more = true;
+    while (more) {
+        pass(k, k + 1);
+        ++k;
+        progress.set_fraction(progress.elapsed_seconds() / options.time_budget);
+        more = progress.elapsed_seconds() < options.time_budget;
+        if (options.group) more = options.group->broadcast(more);
+    }
+    return k;
+}
+
+// After the passes: sums the film's accumulators and r's counters (rays, dropped samples) over the group
+// onto rank 0, and returns the samples per pixel the whole group took. Without a group, `passes`.
+int sum_over_group(const RenderOptions& options, int passes, std::span<double> accumulators, RenderResult& r);
 
 RenderResult render(const Scene& scene, const Integrator& integrator, const RenderOptions& options);
 

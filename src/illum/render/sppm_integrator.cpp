@@ -129,7 +129,7 @@ private:
     SampledSpectrum sample_direct(const SurfaceHit& hit, const BSDF& bsdf, const SampledWavelengths& lambda,
                                   CameraThread& t) const;
     void photon_pass(int iteration, const SampledWavelengths& pass_lambda);
-    void update_pixels();
+    void update_pixels(tbb::task_arena& arena);
     Image image(int iterations) const;
 
     const Scene& scene_;
@@ -156,6 +156,9 @@ private:
     int chunks_ = 1;
     std::vector<Color3> chunk_phi_;
     std::vector<std::uint32_t> chunk_m_;
+    // In a render group (render_group.h), each pixel's Φ (rgb) and M of this iteration, summed over the
+    // ranks, which each trace their own slice of the iteration's photons.
+    std::vector<double> group_gathered_;
 
     VisiblePointGrid grid_;
     std::unique_ptr<FilmResponse> response_, response_terminated_;
@@ -326,14 +329,18 @@ void SppmRender::camera_pass(int iteration, const SampledWavelengths& pass_lambd
 void SppmRender::photon_pass(int iteration, const SampledWavelengths& pass_lambda) {
     std::fill(chunk_phi_.begin(), chunk_phi_.end(), Color3());
     std::fill(chunk_m_.begin(), chunk_m_.end(), 0u);
-    const std::uint64_t first = std::uint64_t(iteration) * photons_;
+    // This process's photons of the iteration: all of them, or its rank's slice [lo, hi) in a group.
+    const RenderGroup* group = options_.group;
+    const std::uint64_t n = group ? std::uint64_t(group->size()) : 1, r = group ? std::uint64_t(group->rank()) : 0;
+    const std::uint64_t lo = photons_ * r / n, count = photons_ * (r + 1) / n - lo;
+    const std::uint64_t first = std::uint64_t(iteration) * photons_ + lo;
     tbb::parallel_for(tbb::blocked_range<int>(0, chunks_, 1), [&](const auto& range) {
         PhotonThread& t = photon_threads_->local();
         for (int c = range.begin(); c != range.end(); ++c) {
             Color3* phi = chunk_phi_.data() + std::size_t(c) * pixels_;
             std::uint32_t* m = chunk_m_.data() + std::size_t(c) * pixels_;
-            const std::uint64_t i0 = photons_ * std::uint64_t(c) / std::uint64_t(chunks_),
-                                i1 = photons_ * std::uint64_t(c + 1) / std::uint64_t(chunks_);
+            const std::uint64_t i0 = count * std::uint64_t(c) / std::uint64_t(chunks_),
+                                i1 = count * std::uint64_t(c + 1) / std::uint64_t(chunks_);
             for (std::uint64_t i = i0; i < i1; ++i) {
                 t.rays +=
                     tracer_.trace(first + i, pass_lambda, t.sampler, t.arena, [&](const PhotonArrival& a) {
@@ -358,14 +365,42 @@ void SppmRender::photon_pass(int iteration, const SampledWavelengths& pass_lambd
 }
 
 // Hachisuka & Jensen 2009, eqs. 7-8: N̂ = N + αM, R̂ = R √(N̂ / (N + M)), τ̂ = (τ + Φ) (R̂ / R)².
-void SppmRender::update_pixels() {
+// In a group every rank sums its chunks, the sums are added over the ranks (the same bits everywhere), and
+// every rank updates its pixels alike.
+void SppmRender::update_pixels(tbb::task_arena& arena) {
+    RenderGroup* group = options_.group;
+    auto chunk_sum = [&](std::size_t i, Color3& phi, std::uint64_t& m) {
+        for (int c = 0; c < chunks_; ++c) { // in chunk order: the same sum at any thread count
+            phi += chunk_phi_[std::size_t(c) * pixels_ + i];
+            m += chunk_m_[std::size_t(c) * pixels_ + i];
+        }
+    };
+    if (group) {
+        group_gathered_.resize(pixels_ * 4);
+        arena.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixels_, 4096), [&](const auto& range) {
+                for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                    Color3 phi;
+                    std::uint64_t m = 0;
+                    chunk_sum(i, phi, m);
+                    double* g = &group_gathered_[i * 4];
+                    g[0] = phi[0], g[1] = phi[1], g[2] = phi[2], g[3] = double(m);
+                }
+            });
+        });
+        group->sum(group_gathered_, true);
+    }
+    arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixels_, 4096), [&](const auto& range) {
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
             Color3 phi;
             std::uint64_t m = 0;
-            for (int c = 0; c < chunks_; ++c) { // in chunk order: the same sum at any thread count
-                phi += chunk_phi_[std::size_t(c) * pixels_ + i];
-                m += chunk_m_[std::size_t(c) * pixels_ + i];
+            if (group) {
+                const double* g = &group_gathered_[i * 4];
+                phi = Color3(float(g[0]), float(g[1]), float(g[2]));
+                m = std::uint64_t(g[3]);
+            } else {
+                chunk_sum(i, phi, m);
             }
             if (m == 0) continue;
             float n_new = n_[i] + kGamma * float(m);
@@ -374,6 +409,7 @@ void SppmRender::update_pixels() {
             n_[i] = n_new;
             radius_[i] = r_new;
         }
+    });
     });
 }
 
@@ -432,8 +468,13 @@ RenderResult SppmRender::run(SppmStats* stats) {
     int k = 0;
     double photon_seconds = 0;
     for (;; ++k) {
-        if (timed ? (k > 0 && progress.elapsed_seconds() >= options_.time_budget) : k >= iterations_asked)
+        if (timed && k > 0) {
+            bool more = progress.elapsed_seconds() < options_.time_budget;
+            if (options_.group) more = options_.group->broadcast(more); // rank 0's clock decides
+            if (!more) break;
+        } else if (!timed && k >= iterations_asked) {
             break;
+        }
         SampledWavelengths lambda =
             spectral_
                 ? SampledWavelengths::sample_visible(radical_inverse_3(std::uint32_t(k)), scene_.color_space)
@@ -452,7 +493,7 @@ RenderResult SppmRender::run(SppmStats* stats) {
         auto t0 = std::chrono::steady_clock::now();
         arena.execute([&] { photon_pass(k, lambda); });
         photon_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        arena.execute([&] { update_pixels(); });
+        update_pixels(arena);
         progress.add(1);
         if (timed) progress.set_fraction(progress.elapsed_seconds() / options_.time_budget);
     }
@@ -463,11 +504,15 @@ RenderResult SppmRender::run(SppmStats* stats) {
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.spp = k;
     r.samples = pixels_ * std::uint64_t(k);
-    for (auto& t : *camera_threads_) r.rays += t.rays;
+    std::uint64_t photon_rays = 0;
     for (auto& t : *photon_threads_) {
-        r.rays += t.rays;
+        photon_rays += t.rays;
         stats_.photon_gathers += t.gathers;
     }
+    // In a group every rank traces the same camera paths and its own photons.
+    for (auto& t : *camera_threads_) r.rays += t.rays;
+    r.rays += sum_counter(options_.group, photon_rays);
+    stats_.photon_gathers = sum_counter(options_.group, stats_.photon_gathers);
     r.nonfinite_samples = nonfinite_;
     r.threads = threads;
     if (stats) {
