@@ -6,7 +6,7 @@ set -euo pipefail
 # `make test-sanitize` and `make fuzz`.
 packages=(build-essential cmake pkg-config libembree-dev libtbb-dev libopenexr-dev libstb-dev libcli11-dev
           nlohmann-json3-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev clang
-          libclang-rt-dev llvm libnanovdb-dev libopenmpi-dev openmpi-bin)
+          libclang-rt-dev llvm libnanovdb-dev libopenmpi-dev openmpi-bin libcpp-httplib-dev chromium)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <thread>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
@@ -17,6 +18,7 @@
 #include "illum/scene/build.h"
 #include "illum/util/error.h"
 #include "mpi_run.h"
+#include "preview_server.h"
 #include "scene_loading.h"
 
 namespace illum::cli {
@@ -41,6 +43,8 @@ struct RenderArgs {
     bool strict = false;
     bool spectral = false;
     std::string share; // "R/N": render rank R's share of an N-rank job alone
+    std::string serve; // "HOST:PORT" or "PORT" of the live preview
+    double serve_linger = 0;
 };
 
 void check_output_folder_only(const std::string& path) {
@@ -124,6 +128,7 @@ struct Prepared {
     std::vector<std::string> outputs;
     WriteOptions write_options;
     RenderOptions options;
+    std::optional<ServeAddress> serve;
 };
 
 Prepared prepare(const RenderArgs& args, bool lead, bool quiet) {
@@ -170,6 +175,7 @@ Prepared prepare(const RenderArgs& args, bool lead, bool quiet) {
     p.options.spectral = args.spectral;
     p.write_options.exposure_stops = args.exposure;
     p.write_options.tonemap = *tonemap;
+    if (!args.serve.empty()) p.serve = parse_serve_address(args.serve);
     return p;
 }
 
@@ -199,6 +205,14 @@ void run(const RenderArgs& args) {
     MpiRun::agree(error);
     const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+    // The live preview: rank 0's, of its own share in a job of several ranks.
+    std::unique_ptr<PreviewServer> server;
+    if (p.serve && lead) {
+        server = std::make_unique<PreviewServer>(*p.serve, p.scene->width, p.scene->height);
+        fmt::print(stderr, "preview: {}\n", server->url());
+        p.options.preview = server.get();
+    }
+
     RenderResult result = render(*p.scene, *p.integrator, p.options);
     if (!lead) return;
     if (result.nonfinite_samples > 0 && !args.quiet)
@@ -219,6 +233,14 @@ void run(const RenderArgs& args) {
                    p.scene->width, p.scene->height, result.spp, result.seconds, result.samples / result.seconds,
                    result.rays / result.seconds, ranks > 1 ? fmt::format("{} ranks of ", ranks) : "",
                    result.threads);
+    if (server) {
+        server->finish();
+        if (args.serve_linger > 0) {
+            if (!args.quiet) fmt::print(stderr, "preview: serving the final image for {} s\n", args.serve_linger);
+            std::this_thread::sleep_for(std::chrono::duration<double>(args.serve_linger));
+        }
+        server->stop();
+    }
 }
 
 } // namespace
@@ -255,6 +277,12 @@ void add_render_command(CLI::App& app) {
     cmd->add_option("--share", args->share,
                     "Render only share RANK/RANKS of the samples, as that rank of an mpirun job would (to time "
                     "a large job's ranks one by one; the image is that share's alone)");
+    cmd->add_option("--serve", args->serve,
+                    "Serve a live preview page at HOST:PORT or PORT (on 127.0.0.1; port 0 picks a free one) "
+                    "while rendering");
+    cmd->add_option("--serve-linger", args->serve_linger,
+                    "Keep serving the preview this many seconds after the render is done")
+        ->check(positive_number());
     cmd->callback([args] { run(*args); });
 }
 

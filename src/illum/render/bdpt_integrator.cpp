@@ -182,6 +182,17 @@ BDPTIntegrator::BDPTIntegrator(const Scene& scene, int max_depth)
                     "(the realistic camera and a thin-lens orthographic one have no importance function)");
 }
 
+namespace {
+
+// The camera film's image plus the light subpaths' splats (t = 1) after `passes` samples per pixel.
+Image with_splats(Image image, const SplatFilm& splats, int passes) {
+    Image s = splats.resolve(passes);
+    for (std::size_t i = 0; i < image.pixel_count(); ++i) image.data()[i] += s.data()[i];
+    return image;
+}
+
+} // namespace
+
 RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
     const int w = scene_.width, h = scene_.height;
     const std::size_t pixels = std::size_t(w) * h;
@@ -330,7 +341,8 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
                                 e.weight);
             for (const Splat& sp : o.splats) splat_film.add_splat(sp);
             nonfinite += std::uint64_t(o.dropped);
-        });
+        },
+        [&](int k) { return with_splats(film.resolve(), splat_film, k); });
 
     RenderResult r;
     for (auto& tc : contexts) r.rays += tc.rays;
@@ -338,9 +350,7 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
     r.spp = sum_over_group(options, passes, film.accumulators(), r);
     if (options.group) options.group->sum(splat_film.accumulators(), false);
     r.seconds = progress.elapsed_seconds();
-    r.image = film.resolve();
-    Image splats = splat_film.resolve(r.spp);
-    for (std::size_t i = 0; i < pixels; ++i) r.image.data()[i] += splats.data()[i];
+    r.image = with_splats(film.resolve(), splat_film, r.spp);
     r.samples = pixels * std::uint64_t(r.spp);
     r.threads = threads;
     return r;

@@ -266,7 +266,8 @@ RenderResult LightPathIntegrator::render_image(const RenderOptions& options) con
         [&](const ChunkSplats& out) {
             for (const Splat& sp : out.splats) film.add_splat(sp);
             nonfinite += std::uint64_t(out.dropped);
-        });
+        },
+        [&](int k) { return film.resolve(k); });
 
     RenderResult r;
     for (auto& tc : contexts) r.rays += tc.rays;

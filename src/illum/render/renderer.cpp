@@ -114,7 +114,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
         });
     };
 
-    const int passes = run_passes(options, progress, pass);
+    const int passes = run_passes(options, progress, pass, [&](int) { return film.resolve(); });
     progress.finish();
 
     RenderResult r;

@@ -10,6 +10,7 @@
 #include "illum/image/image.h"
 #include "illum/render/integrator.h"
 #include "illum/render/render_group.h"
+#include "illum/render/render_preview.h"
 #include "illum/render/scene.h"
 #include "illum/util/progress.h"
 
@@ -27,6 +28,8 @@ struct RenderOptions {
     bool spectral = false;
     // Several processes rendering one image (render_group.h); null: this process renders every sample.
     RenderGroup* group = nullptr;
+    // A live preview (render_preview.h): passes of one sample per pixel, each handed over when done.
+    RenderPreview* preview = nullptr;
 };
 
 struct RenderResult {
@@ -57,23 +60,28 @@ SamplerKind render_sampler_kind(const RenderOptions& options);
 
 // Runs a render loop's passes: pass(k0, k1) renders this process's samples k0..k1-1 (of its share,
 // render_group.h). Either all of the share's samples of options.spp at once, or, with a time budget,
-// passes of one sample per pixel until the budget is spent (on rank 0's clock in a group). Returns the
-// passes this process rendered.
-template <class Pass> int run_passes(const RenderOptions& options, Progress& progress, Pass&& pass) {
+// passes of one sample per pixel until the budget is spent (on rank 0's clock in a group). With a
+// preview, passes of one sample per pixel either way, after each of which preview->frame gets snapshot(k),
+// the image after k passes. Returns the passes this process rendered.
+template <class Pass, class Snapshot>
+int run_passes(const RenderOptions& options, Progress& progress, Pass&& pass, Snapshot&& snapshot) {
     const SampleShare share = sample_share(options.group);
-    if (options.time_budget <= 0) {
-        int n = share.count(options.spp);
+    const bool timed = options.time_budget > 0;
+    const int n = share.count(options.spp);
+    if (!timed && !options.preview) {
         pass(0, n);
         return n;
     }
     int k = 0;
-    bool more = true;
+    bool more = timed || n > 0;
     while (more) {
         pass(k, k + 1);
         ++k;
-        progress.set_fraction(progress.elapsed_seconds() / options.time_budget);
-        more = progress.elapsed_seconds() < options.time_budget;
-        if (options.group) more = options.group->broadcast(more);
+        double fraction = timed ? progress.elapsed_seconds() / options.time_budget : double(k) / n;
+        if (timed) progress.set_fraction(fraction);
+        more = timed ? progress.elapsed_seconds() < options.time_budget : k < n;
+        if (timed && options.group) more = options.group->broadcast(more);
+        if (options.preview) options.preview->frame(snapshot(k), k, timed ? 0 : n, more ? fraction : 1.0);
     }
     return k;
 }

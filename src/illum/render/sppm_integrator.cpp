@@ -495,7 +495,11 @@ RenderResult SppmRender::run(SppmStats* stats) {
         photon_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         update_pixels(arena);
         progress.add(1);
-        if (timed) progress.set_fraction(progress.elapsed_seconds() / options_.time_budget);
+        const double fraction =
+            timed ? progress.elapsed_seconds() / options_.time_budget : double(k + 1) / iterations_asked;
+        if (timed) progress.set_fraction(fraction);
+        if (options_.preview)
+            options_.preview->frame(image(k + 1), k + 1, timed ? 0 : iterations_asked, std::min(1.0, fraction));
     }
     progress.finish();
 

@@ -20,9 +20,12 @@ RenderResult VolPathCausticsIntegrator::render_image(const RenderOptions& option
         camera_options.time_budget = options.time_budget * (1 - kCausticTimeShare);
         light_options.time_budget = options.time_budget * kCausticTimeShare;
     }
+    // A preview sees the camera paths' passes, then the sum.
+    light_options.preview = nullptr;
     RenderResult r = render(scene_, camera_paths_, camera_options);
     RenderResult c = caustics_.render_image(light_options);
     for (std::size_t i = 0; i < r.image.pixel_count(); ++i) r.image.data()[i] += c.image.data()[i];
+    if (options.preview) options.preview->frame(r.image, r.spp, options.time_budget > 0 ? 0 : r.spp, 1.0);
     r.seconds += c.seconds;
     r.rays += c.rays;
     r.samples += c.samples;
