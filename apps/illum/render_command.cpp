@@ -223,6 +223,10 @@ void run(const RenderArgs& args) {
         write_image(result.image, o, p.write_options);
         if (!args.quiet) fmt::print(stderr, "wrote {}\n", o);
     }
+    for (const auto& extra : result.extra_images) write_image(extra.image, extra.name);
+    if (!result.extra_images.empty() && !args.quiet)
+        fmt::print(stderr, "wrote {} images of {}'s strategies ({} ...)\n", result.extra_images.size(),
+                   p.integrator_name, result.extra_images.front().name);
     const int ranks = group ? group->size() : 1;
     if (!args.stats.empty()) {
         RenderTimes times{setup_seconds, group ? group->communication_seconds : 0.0, ranks};

@@ -226,3 +226,87 @@ TEST(BDPT, DeterministicAcrossThreads) {
 
 } // namespace
 } // namespace illum
+
+// pbrt-v4's visualizestrategies / visualizeweights: one image per strategy (s, t), named as pbrt-v4 names
+// them. The MIS-weighted images add up to the render; the unweighted ones of one depth each estimate the
+// same light (transport of that many bounces), so their difference averages to zero within its noise.
+namespace illum {
+namespace {
+
+using test::render_pbrt;
+using test::RenderSetup;
+
+std::string visualize_scene(const char* flag) {
+    return std::string("Integrator \"bdpt\" \"integer maxdepth\" [2] \"bool ") + flag + R"(" [true]
+LookAt 0 -4 1.5  0 0 0.5  0 0 1
+Camera "perspective" "float fov" [40]
+Film "rgb" "integer xresolution" [48] "integer yresolution" [32]
+PixelFilter "box"
+WorldBegin
+AttributeBegin
+  AreaLightSource "diffuse" "rgb L" [4 4 4]
+  Shape "trianglemesh" "point3 P" [-0.5 -0.5 2.5 0.5 -0.5 2.5 0.5 0.5 2.5 -0.5 0.5 2.5] "integer indices" [0 2 1 0 3 2]
+AttributeEnd
+Material "diffuse" "rgb reflectance" [0.6 0.5 0.4]
+Shape "trianglemesh" "point3 P" [-3 -3 0 3 -3 0 3 3 0 -3 3 0] "integer indices" [0 1 2 0 2 3]
+Shape "sphere" "float radius" [0.5]
+)";
+}
+
+const Image& named(const RenderResult& r, const std::string& name) {
+    for (const auto& e : r.extra_images)
+        if (e.name == name) return e.image;
+    ADD_FAILURE() << "no image " << name;
+    return r.image;
+}
+
+TEST(BdptVisualize, WeightedStrategiesAddUpToTheRender) {
+    RenderSetup setup;
+    setup.integrator = "bdpt";
+    setup.spp = 16;
+    RenderResult r = render_pbrt(visualize_scene("visualizeweights"), setup);
+    std::vector<std::string> names;
+    for (const auto& e : r.extra_images) names.push_back(e.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"bdpt_d00_s00_t02.exr", "bdpt_d01_s00_t03.exr",
+                                               "bdpt_d01_s01_t02.exr", "bdpt_d01_s02_t01.exr",
+                                               "bdpt_d02_s00_t04.exr", "bdpt_d02_s01_t03.exr",
+                                               "bdpt_d02_s02_t02.exr", "bdpt_d02_s03_t01.exr"}));
+    double worst = 0;
+    for (std::size_t i = 0; i < r.image.pixel_count(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            double sum = 0;
+            for (const auto& e : r.extra_images) sum += e.image.data()[i][c];
+            double v = r.image.data()[i][c];
+            worst = std::max(worst, std::abs(sum - v) / std::max(1e-3, std::abs(v)));
+        }
+    EXPECT_LT(worst, 1e-4);
+    EXPECT_GT(r.image.channel_mean()[0], 0.01f);
+}
+
+TEST(BdptVisualize, UnweightedStrategiesOfOneDepthAgree) {
+    RenderSetup setup;
+    setup.integrator = "bdpt";
+    setup.spp = 64;
+    RenderResult r = render_pbrt(visualize_scene("visualizestrategies"), setup);
+    // Depth 1 (one bounce on the diffuse floor or sphere): the camera path finds the light (s = 0), next
+    // event estimation (s = 1) and light tracing (s = 2, t = 1).
+    const Image& a = named(r, "bdpt_d01_s00_t03.exr");
+    for (const char* other : {"bdpt_d01_s01_t02.exr", "bdpt_d01_s02_t01.exr"}) {
+        const Image& b = named(r, other);
+        for (int c = 0; c < 3; ++c) {
+            // z of the mean per-pixel difference: pixels are independent estimates of the same values.
+            double n = double(a.pixel_count()), sum = 0, sum2 = 0;
+            for (std::size_t i = 0; i < a.pixel_count(); ++i) {
+                double d = double(a.data()[i][c]) - b.data()[i][c];
+                sum += d;
+                sum2 += d * d;
+            }
+            double mean = sum / n, se = std::sqrt((sum2 / n - mean * mean) / n);
+            EXPECT_LT(std::abs(mean), 4 * se) << other << " channel " << c;
+            EXPECT_GT(b.channel_mean()[c], 0.01f) << other;
+        }
+    }
+}
+
+} // namespace
+} // namespace illum

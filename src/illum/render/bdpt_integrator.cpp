@@ -3,6 +3,7 @@
 #include "illum/render/chunked_schedule.h"
 
 #include <algorithm>
+#include <fmt/core.h>
 #include <oneapi/tbb/enumerable_thread_specific.h>
 #include <oneapi/tbb/global_control.h>
 #include <oneapi/tbb/parallel_for.h>
@@ -32,8 +33,17 @@ struct CameraEstimate {
 struct ChunkOutput {
     std::vector<CameraEstimate> estimates;
     std::vector<Splat> splats;
+    // visualizestrategies / visualizeweights: each strategy's contribution, splatted into its own image.
+    std::vector<std::pair<int, Splat>> strategy_splats;
     int dropped = 0;
 };
+
+// pbrt-v4's numbering of the strategy images: depth d = s + t - 2 holds s = 0..d+2, after the images of
+// the shallower depths.
+int strategy_index(int s, int t) {
+    int depth = s + t - 2;
+    return s + depth * (5 + depth) / 2;
+}
 
 // The subpaths' storage, once per thread: maxdepth + 2 camera and maxdepth + 1 light vertices.
 struct Subpaths {
@@ -91,9 +101,10 @@ float mis_weight(const PathContext& ctx, PathVertex* lv, PathVertex* cv, int s, 
     return 1 / (1 + sum);
 }
 
-// The contribution of strategy (s, t), MIS-weighted. t = 1 sets *p_raster (a splat).
+// The contribution of strategy (s, t), MIS-weighted, and its weight in *weight. t = 1 sets *p_raster (a
+// splat).
 SampledSpectrum connect(const PathContext& ctx, PathVertex* lv, PathVertex* cv, int s, int t, int ch,
-                        bool camera_delta, Point2f* p_raster) {
+                        bool camera_delta, Point2f* p_raster, float* weight) {
     const Scene& scene = ctx.scene;
     Sampler& sampler = ctx.tc.sampler;
     // A light vertex at infinity ends the camera subpath; only s = 0 uses it.
@@ -170,6 +181,7 @@ SampledSpectrum connect(const PathContext& ctx, PathVertex* lv, PathVertex* cv, 
     } else {
         w = mis_weight(ctx, lv, cv, s, t);
     }
+    *weight = w;
     return l * w;
 }
 
@@ -218,6 +230,12 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
     float scene_radius = 0;
     scene_.accelerator.bounds().bounding_sphere(&scene_center, &scene_radius);
     const int max_depth = max_depth_;
+    const bool visualize_weights = scene_.request.bdpt_visualize_weights;
+    const bool visualize = visualize_weights || scene_.request.bdpt_visualize_strategies;
+    // One splat film per strategy image (pbrt-v4's weightFilms), for depths 0..maxdepth.
+    std::vector<SplatFilm> strategy_films;
+    if (visualize)
+        for (int i = 0; i < strategy_index(0, max_depth + 3); ++i) strategy_films.emplace_back(w, h, *scene_.filter);
 
     // One pixel sample: both subpaths, then every strategy.
     auto trace = [&](ThreadContext& tc, Subpaths& sp, int x, int y, ChunkOutput& out) {
@@ -302,11 +320,19 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
                 int depth = s + t - 2;
                 if ((s == 1 && t == 1) || depth < 0 || depth > max_depth) continue;
                 Point2f p_raster;
-                SampledSpectrum c = connect(ctx, lv, cv, s, t, ch_camera, camera_delta, &p_raster);
+                float w = 0;
+                SampledSpectrum c = connect(ctx, lv, cv, s, t, ch_camera, camera_delta, &p_raster, &w);
                 if (c.is_black()) continue;
                 if (!c.is_finite() || c.has_negative()) {
                     ++out.dropped;
                     continue;
+                }
+                if (visualize) {
+                    // pbrt-v4: the weighted contribution, or the unweighted one (the strategy alone).
+                    SampledSpectrum v = visualize_weights ? c : (w > 0 ? c / w : SampledSpectrum(0.0f));
+                    out.strategy_splats.push_back(
+                        {strategy_index(s, t),
+                         {t == 1 ? p_raster : p_film, scene_.sensor.to_rgb(Radiance3(v), tc.lambda)}});
                 }
                 if (t == 1)
                     out.splats.push_back({p_raster, scene_.sensor.to_rgb(Radiance3(c), tc.lambda)});
@@ -327,6 +353,7 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
             Subpaths& sp = storage.local();
             out.estimates.clear();
             out.splats.clear();
+            out.strategy_splats.clear();
             out.dropped = 0;
             for (std::size_t p = p0; p < p1; ++p) {
                 int x = int(p % std::size_t(w)), y = int(p / std::size_t(w));
@@ -340,6 +367,7 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
                 film.add_sample(int(e.pixel % std::uint32_t(w)), int(e.pixel / std::uint32_t(w)), e.value,
                                 e.weight);
             for (const Splat& sp : o.splats) splat_film.add_splat(sp);
+            for (const auto& [i, sp] : o.strategy_splats) strategy_films[std::size_t(i)].add_splat(sp);
             nonfinite += std::uint64_t(o.dropped);
         },
         [&](int k) { return with_splats(film.resolve(), splat_film, k); });
@@ -351,6 +379,15 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
     if (options.group) options.group->sum(splat_film.accumulators(), false);
     r.seconds = progress.elapsed_seconds();
     r.image = with_splats(film.resolve(), splat_film, r.spp);
+    // pbrt-v4's names: bdpt_d<depth>_s<s>_t<t>.exr for t >= 1, less s = 1, t = 1.
+    for (int depth = 0; visualize && depth <= max_depth; ++depth)
+        for (int s = 0; s <= depth + 2; ++s) {
+            int t = depth + 2 - s;
+            if (t == 0 || (s == 1 && t == 1)) continue;
+            SplatFilm& f = strategy_films[std::size_t(strategy_index(s, t))];
+            if (options.group) options.group->sum(f.accumulators(), false);
+            r.extra_images.push_back({fmt::format("bdpt_d{:02}_s{:02}_t{:02}.exr", depth, s, t), f.resolve(r.spp)});
+        }
     r.samples = pixels * std::uint64_t(r.spp);
     r.threads = threads;
     return r;

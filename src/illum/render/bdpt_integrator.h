@@ -24,7 +24,11 @@
 // - An orthographic camera (a delta direction) gets no t = 1 strategy (its lens point is fixed by the
 //   vertex, so it would have to be weighted against a delta); pbrt-v4 only allows the perspective camera.
 //   Cameras without importance (realistic) are refused.
-// - visualizestrategies / visualizeweights are not supported (warned when the scene asks).
+//
+// Debug outputs, as pbrt-v4's: with "bool visualizestrategies" each strategy's unweighted contribution
+// (what it estimates alone), with "bool visualizeweights" its MIS-weighted one, is splatted into an image of
+// its own, bdpt_d<depth>_s<s>_t<t>.exr (RenderResult::extra_images); the weighted images of all strategies
+// add up to the render.
 //
 // Determinism: as light tracing (lightpath_integrator.h): chunks of pixels at one sample index are traced
 // in parallel; each chunk keeps its camera estimates (pixel, value, filter weight) and its t = 1 splats in

@@ -35,12 +35,10 @@ RenderRequest create_render_request(const EntityDesc& in, const EntityDesc& s, D
         if (!(r.sppm_radius > 0)) throw Error(in.loc, "radius must be positive");
         r.sppm_seed = in.params.get_int("seed", 6502);
     }
-    if (r.integrator == "bdpt")
-        for (const char* name : {"visualizestrategies", "visualizeweights"})
-            if (in.params.get_bool(name, false))
-                diag.unsupported(
-                    in.params.find(name)->loc,
-                    fmt::format("\"{}\" is not supported; no per-strategy images are written", name));
+    if (r.integrator == "bdpt") {
+        r.bdpt_visualize_strategies = in.params.get_bool("visualizestrategies", false);
+        r.bdpt_visualize_weights = in.params.get_bool("visualizeweights", false);
+    }
     if (in.params.get_bool("regularize", false))
         diag.unsupported(in.params.find("regularize")->loc,
                          "\"regularize\" is not supported; rendered without");

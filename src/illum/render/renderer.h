@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "illum/image/image.h"
 #include "illum/render/integrator.h"
@@ -41,6 +42,13 @@ struct RenderResult {
     std::uint64_t nonfinite_samples =
         0; // NaN/Inf (or negative radiance) estimates: dropped, counted, never written
     int threads = 0;
+    // Further images an integrator makes besides the render (bdpt's per-strategy images), each with the
+    // file name it is written to (relative to the working directory, as pbrt-v4 writes them).
+    struct NamedImage {
+        std::string name;
+        Image image;
+    };
+    std::vector<NamedImage> extra_images;
 };
 
 // An integrator that renders the whole image itself rather than one camera sample at a time (light

@@ -31,6 +31,10 @@ struct RenderRequest {
     long long sppm_photons_per_iteration = -1;
     float sppm_radius = 1;
     int sppm_seed = 6502;
+    // Integrator "bdpt": pbrt-v4's debug outputs, an image per strategy (s, t) of its unweighted
+    // contribution (visualizestrategies) or its MIS-weighted one (visualizeweights, which wins if both).
+    bool bdpt_visualize_strategies = false;
+    bool bdpt_visualize_weights = false;
 };
 
 class Scene {
