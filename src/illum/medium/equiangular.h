@@ -10,6 +10,7 @@
 #include <cmath>
 #include <optional>
 
+#include "illum/math/fast_trig.h"
 #include "illum/math/vector.h"
 
 namespace illum {
@@ -22,9 +23,9 @@ public:
         e.delta_ = dot(c - o, d);
         e.d_ = length(c - (o + d * e.delta_));
         if (!(e.d_ > 1e-7f) || !(b > a)) return std::nullopt;
-        e.theta_a_ = std::atan((a - e.delta_) / e.d_);
+        e.theta_a_ = fast_atan((a - e.delta_) / e.d_);
         // (just below π/2 as a float, so that tan stays positive)
-        e.theta_b_ = std::isinf(b) ? std::nextafter(kPi / 2, 0.0f) : std::atan((b - e.delta_) / e.d_);
+        e.theta_b_ = std::isinf(b) ? kBelowHalfPi : fast_atan((b - e.delta_) / e.d_);
         if (!(e.theta_b_ > e.theta_a_)) return std::nullopt;
         e.a_ = a;
         e.b_ = b;
@@ -32,7 +33,7 @@ public:
     }
     float sample(float u, float* pdf) const {
         float theta = theta_a_ + u * (theta_b_ - theta_a_);
-        float t = std::clamp(delta_ + d_ * std::tan(theta), a_, b_);
+        float t = std::clamp(delta_ + d_ * fast_tan(theta), a_, b_);
         *pdf = this->pdf(t);
         return t;
     }
@@ -43,6 +44,7 @@ public:
     }
 
 private:
+    static constexpr float kBelowHalfPi = 1.57079625129699707f; // the float just below π/2
     float delta_ = 0, d_ = 0, theta_a_ = 0, theta_b_ = 0, a_ = 0, b_ = 0;
 };
 
