@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <functional>
 #include <filesystem>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -47,11 +48,14 @@ inline RenderResult render_pbrt(const std::string& text, const RenderSetup& setu
 
 // ../shared/scenes/NAME/test.pbrt rendered with its own sampler and its own integrator (or `integrator`),
 // the film resized to resolution² when resolution > 0; a non-finite sample or pixel fails the test.
+// `adjust`, when given, changes the built scene first (its render request, for example).
 inline Image render_shared_scene(const std::string& name, int spp, std::uint64_t seed, int resolution = 0,
-                                 bool spectral = false, const std::string& integrator = "", int threads = 0) {
+                                 bool spectral = false, const std::string& integrator = "", int threads = 0,
+                                 const std::function<void(Scene&)>& adjust = {}) {
     SceneDesc desc = parse_pbrt_file(shared_dir() + "/scenes/" + name + "/test.pbrt");
     if (resolution > 0) desc.set_film_resolution(resolution, resolution);
     auto scene = build_scene(desc);
+    if (adjust) adjust(*scene);
     auto in = make_integrator(integrator.empty() ? scene->request.integrator : integrator, *scene,
                               scene->request.max_depth);
     RenderOptions opt;
@@ -149,6 +153,32 @@ inline MeanEstimate pixel_mean(const Image& img, int channel) {
     }
     double mean = sum / n, var = std::max(0.0, (sum2 - n * mean * mean) / (n - 1));
     return {mean, std::sqrt(var / n)};
+}
+
+// Two renders A and B of independent seeds against a reference, one channel: d = (A - ref)² - (A - B)²/2
+// averages to the reference's own variance (zero for an exact one) when A and the reference differ only
+// by noise; mean_sigma is the σ of the mean of (A + B)/2 (tests/scenes/scenes_test.cpp).
+struct PixelCheck {
+    double d_mean = 0, d_se = 0, mse_ref = 0, mse_noise = 0, mean_sigma = 0;
+};
+inline PixelCheck pixel_check(const Image& a, const Image& b, const Image& ref, int c) {
+    double sum = 0, sum2 = 0, mse_ref = 0, mse_ab = 0;
+    std::size_t n = a.pixel_count();
+    for (std::size_t i = 0; i < n; ++i) {
+        double ea = a.data()[i][c] - ref.data()[i][c], eab = a.data()[i][c] - b.data()[i][c];
+        double d = ea * ea - 0.5 * eab * eab;
+        sum += d;
+        sum2 += d * d;
+        mse_ref += ea * ea;
+        mse_ab += 0.5 * eab * eab;
+    }
+    PixelCheck k;
+    k.d_mean = sum / n;
+    k.d_se = std::sqrt((sum2 / n - k.d_mean * k.d_mean) / (n - 1));
+    k.mse_ref = mse_ref / n;
+    k.mse_noise = mse_ab / n;
+    k.mean_sigma = std::sqrt(k.mse_noise / (2.0 * n)); // σ of the mean of (A + B) / 2
+    return k;
 }
 
 } // namespace illum::test

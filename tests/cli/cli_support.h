@@ -6,7 +6,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace cli_support {
 
@@ -48,5 +50,15 @@ inline CliRun illum(const std::string& args, const fs::path& dir) {
     return run_in(command, dir);
 }
 
+
+// A fresh, empty folder for the running test: <tmp>/illum-<prefix>-<pid>-<test name>.
+inline fs::path fresh_test_folder(const std::string& prefix) {
+    fs::path dir = fs::temp_directory_path() /
+                   ("illum-" + prefix + "-" + std::to_string(::getpid()) + "-" +
+                    testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
 
 } // namespace cli_support

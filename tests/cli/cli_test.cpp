@@ -34,10 +34,7 @@ int count_lines(const std::string& s) {
 class Cli : public testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("illum-cli-" + std::to_string(::getpid()) + "-" +
-                                            testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        dir_ = cli_support::fresh_test_folder("cli");
     }
     void TearDown() override { fs::remove_all(dir_); }
 

@@ -59,10 +59,7 @@ class MpiCli : public testing::Test {
 protected:
     void SetUp() override {
         if (kMpiexec.empty()) GTEST_SKIP() << "illum was built without MPI";
-        dir_ = fs::temp_directory_path() / ("illum-mpi-" + std::to_string(::getpid()) + "-" +
-                                            testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        dir_ = cli_support::fresh_test_folder("mpi");
     }
     void TearDown() override {
         if (!dir_.empty()) fs::remove_all(dir_);

@@ -21,10 +21,7 @@ using cli_support::read_bytes;
 class PhotonsCli : public testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("illum-photons-" + std::to_string(::getpid()) + "-" +
-                                            testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        dir_ = cli_support::fresh_test_folder("photons");
         std::ofstream(dir_ / "scene.pbrt") << R"(
 Integrator "sppm" "float radius" [0.2] "integer maxdepth" [4] "integer photonsperiteration" [2000]
 LookAt 0 -4 2  0 0 0.5  0 0 1

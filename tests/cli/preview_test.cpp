@@ -26,10 +26,7 @@ using cli_support::read_bytes;
 class Preview : public testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("illum-preview-" + std::to_string(::getpid()) + "-" +
-                                            testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        dir_ = cli_support::fresh_test_folder("preview");
     }
     void TearDown() override { fs::remove_all(dir_); }
 

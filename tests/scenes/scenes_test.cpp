@@ -49,28 +49,8 @@ Image render_scene(const std::string& name, int spp, std::uint64_t seed, int res
     return test::render_shared_scene(name, spp, seed, resolution, spectral);
 }
 
-struct PixelCheck {
-    double d_mean = 0, d_se = 0, mse_ref = 0, mse_noise = 0, mean_sigma = 0;
-};
-PixelCheck pixel_check(const Image& a, const Image& b, const Image& ref, int c) {
-    double sum = 0, sum2 = 0, mse_ref = 0, mse_ab = 0;
-    std::size_t n = a.pixel_count();
-    for (std::size_t i = 0; i < n; ++i) {
-        double ea = a.data()[i][c] - ref.data()[i][c], eab = a.data()[i][c] - b.data()[i][c];
-        double d = ea * ea - 0.5 * eab * eab;
-        sum += d;
-        sum2 += d * d;
-        mse_ref += ea * ea;
-        mse_ab += 0.5 * eab * eab;
-    }
-    PixelCheck k;
-    k.d_mean = sum / n;
-    k.d_se = std::sqrt((sum2 / n - k.d_mean * k.d_mean) / (n - 1));
-    k.mse_ref = mse_ref / n;
-    k.mse_noise = mse_ab / n;
-    k.mean_sigma = std::sqrt(k.mse_noise / (2.0 * n)); // σ of the mean of (A + B) / 2
-    return k;
-}
+using test::pixel_check;
+using test::PixelCheck;
 
 class SharedScene : public testing::TestWithParam<SceneCase> {
 protected:
