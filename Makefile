@@ -6,8 +6,8 @@ DEMO_SPP ?= 64
 # The sanitizer build (ASan + UBSan with clang, cmake/sanitize.cmake), which also builds the fuzzer.
 SAN_BUILD ?= build-sanitize
 
-.PHONY: setup configure build demo test test-long sanitize-configure sanitize-build test-sanitize bench fuzz \
-	format clean
+.PHONY: setup configure build demo test test-long python sanitize-configure sanitize-build test-sanitize bench \
+	fuzz format clean
 
 setup:
 	bash scripts/setup.sh
@@ -23,6 +23,10 @@ demo: build
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE long
+
+# The Python module (python/) into $(BUILD)/python: PYTHONPATH=$(BUILD)/python python3 -c "import illum".
+python: configure
+	cmake --build $(BUILD) -j $(JOBS) --target illum_python
 
 # tests/long/ (label long); fails when no test matched.
 test-long: build

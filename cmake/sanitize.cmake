@@ -20,3 +20,5 @@ set(ILLUM_BUILD_BENCH OFF CACHE BOOL "")
 # MPI (distributed rendering) is tested in the normal build: Open MPI's own allocations at start-up would be
 # LeakSanitizer reports here, and its libraries are not instrumented.
 set(ILLUM_MPI OFF CACHE BOOL "")
+# An ASan-instrumented Python module cannot be loaded by a plain python3: the sanitizer build has none.
+set(ILLUM_BUILD_PYTHON OFF CACHE BOOL "")

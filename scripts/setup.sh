@@ -3,10 +3,12 @@
 set -euo pipefail
 # clang, libclang-rt-dev (the ASan/UBSan/libFuzzer runtimes: only a Recommends of clang, which
 # --no-install-recommends skips) and llvm (llvm-symbolizer, for sanitizer stack traces with file:line) are for
-# `make test-sanitize` and `make fuzz`.
+# `make test-sanitize` and `make fuzz`. pybind11-dev, python3-dev, python3-numpy and python3-pytest are for the
+# Python module (python/) and its tests.
 packages=(build-essential cmake pkg-config libembree-dev libtbb-dev libopenexr-dev libstb-dev libcli11-dev
           nlohmann-json3-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev clang
-          libclang-rt-dev llvm libnanovdb-dev libopenmpi-dev openmpi-bin libcpp-httplib-dev chromium)
+          libclang-rt-dev llvm libnanovdb-dev libopenmpi-dev openmpi-bin libcpp-httplib-dev chromium pybind11-dev
+          python3-dev python3-numpy python3-pytest)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
