@@ -60,7 +60,8 @@ struct BrdfOptions {
 void add_brdf_command(CLI::App& app) {
     auto opt = std::make_shared<BrdfOptions>();
     CLI::App* brdf = app.add_subcommand(
-        "brdf", "reflection models: list, eval, albedo, audit, fresnel, gallery, plot, compare, fit");
+        "brdf",
+        "reflection models: list, eval, albedo, audit, fresnel, gallery, plot, compare, fit, tabulate");
     brdf->require_subcommand(1);
 
     brdf->add_subcommand("list", "name every model with its parameters, defaults and ranges")->callback([] {

@@ -55,12 +55,13 @@ void write(const std::vector<BrdfPlotData>& models, const PlotOptions& o) {
 }
 
 void common(CLI::App* c, PlotOptions& o) {
-    c->add_option("--wi", o.wi, "direction towards the light, θ,φ in degrees (θ from the normal)");
+    c->add_option("--wi", o.wi,
+                  "direction towards the light, θ,φ in degrees (θ from the normal; default 30,0)");
     c->add_option("-o,--output", o.output, "the figure: .svg (vector) or .png (rasterised)")->required();
     c->add_option("--data", o.data, "also write the plotted data (RGB) as JSON to this file");
-    c->add_option("--grid", o.grid, "lobe grid cells in θ per hemisphere (φ has twice as many)")
+    c->add_option("--grid", o.grid, "lobe grid cells in θ per hemisphere (φ has twice as many; default 180)")
         ->check(CLI::Range(8, 1024));
-    c->add_option("--scale", o.scale, "PNG pixels per SVG unit")->check(CLI::Range(0.25, 8.0));
+    c->add_option("--scale", o.scale, "PNG pixels per SVG unit (default 1)")->check(CLI::Range(0.25, 8.0));
 }
 
 } // namespace

@@ -24,9 +24,9 @@ void add_verify_command(CLI::App& app) {
     auto a = std::make_shared<VerifyArgs>();
     CLI::App* c = app.add_subcommand(
         "verify",
-        "check this build's radiometry against closed forms (disk irradiance, rule of five, furnace, "
-        "radiance invariance, Lambertian plane, light power, SH irradiance, BSDF audits); exits 1 on "
-        "a failure");
+        "Check this build's radiometry against closed forms: disk irradiance, the rule of five, closed "
+        "furnaces, radiance invariance, a Lambertian plane, light power, SH irradiance, BSDF audits "
+        "(about 10 s); exits 1 on a failure");
     c->add_flag("--json", a->json, "print the checks as JSON instead of text");
     c->add_option("--only", a->groups,
                   "run only these groups: radiometry, lights, envmap, bsdf (repeatable)");

@@ -152,6 +152,10 @@ TEST(Verify, ToleranceRule) {
     EXPECT_FALSE(judge("g", "n", "x = 1", 1.0, {1.05, 0.01}, 0.0, o).passed);
     EXPECT_FALSE(judge("g", "n", "x = 1", 1.0, {std::nan(""), 0.01}, 0.0, o).passed);
     EXPECT_TRUE(judge("g", "n", "x = 1", 1.0, {1.0005, 0.0}, 1e-3, o).passed);
+    // Too noisy to decide (a diverging estimate's σ covers anything), or non-finite samples dropped.
+    EXPECT_FALSE(judge("g", "n", "x = 1", 1.0, {1e20, 1e20}, 0.0, o).passed);
+    EXPECT_FALSE(judge("g", "n", "x = 1", 1.0, {1.0, 0.02}, 0.0, o).passed);
+    EXPECT_FALSE(judge("g", "n", "x = 1", 1.0, {1.0, 0.001, 3}, 0.0, o).passed);
 }
 
 } // namespace

@@ -12,7 +12,7 @@ namespace illum {
 namespace {
 
 const char* kEnergyForm = "largest ρ(θo) = ∫ f |cos θi| dωi <= 1 (= 1 lossless)";
-const char* kReciprocityForm = "f(wo, wi) = f(wi, wo): worst relative difference <= 0";
+const char* kReciprocityForm = "f(wo, wi) = f(wi, wo) (the worst relative difference)";
 const char* kSamplingForm = "positivity, sample() = f()/pdf(), chi-square at 1%: audits failed";
 
 const CheckResult* find(const AuditResult& r, const std::string& name) {

@@ -38,6 +38,12 @@ Estimate pixel_estimate(const Image& img, int channel) {
     return {mean, std::sqrt(var / double(n))};
 }
 
+Estimate pixel_estimate(const RenderResult& r, int channel) {
+    Estimate e = pixel_estimate(r.image, channel);
+    e.dropped = r.nonfinite_samples;
+    return e;
+}
+
 std::string irradiance_receiver(const std::string& world, int resolution) {
     return fmt::format(R"(
 Integrator "path" "integer maxdepth" [1]

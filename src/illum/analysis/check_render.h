@@ -16,6 +16,8 @@ RenderResult render_check(const Scene& scene, const std::string& integrator, int
                           const VerifyOptions& options);
 // One channel's pixel mean and its standard error.
 Estimate pixel_estimate(const Image& image, int channel);
+// The same for a render, with the non-finite samples it dropped.
+Estimate pixel_estimate(const RenderResult& render, int channel);
 
 // A camera, film and integrator looking at the origin of a white (ρ = 1) Lambertian plane z = 0 through a
 // 4·10⁻⁵ wide orthographic window, so each pixel shows E(origin)/π for the light `world` adds (depth 1).

@@ -3,7 +3,8 @@
 // mean with the closed form.
 //   - Irradiance on the axis of a uniform disk of radius r at height h: E = π L sin²α = π L r²/(r² + h²).
 //   - The rule of five: a disk of diameter D seen from h >= 5 D is a point source of intensity
-//     I = L π r² within 1%, since E_disk/E_point = h²/(r² + h²) = 1/(1 + (r/h)²) and (r/h)² <= 1/100.
+//     I = L π r² within 1%, since E_disk/E_point = h²/(r² + h²) = 1/(1 + (r/h)²) and (r/h)² <= 1/100;
+//     and the point source itself obeys the inverse-square law, E = I/h² on its axis.
 //   - A closed furnace (a sphere that emits Le and reflects with Lambertian albedo ρ, seen from inside):
 //     L = Le Σ ρ^k = Le/(1 - ρ), by the path tracer with Russian roulette to depth 1000 (unbounded for
 //     ρ <= 0.8: the truncation is ρ^1000 < 10⁻⁹⁶; a BSDF that gains energy cannot hang the check).

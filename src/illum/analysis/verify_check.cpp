@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 namespace illum {
 
 VerifyCheck judge(std::string group, std::string name, std::string closed_form, double expected, Estimate m,
@@ -17,6 +19,14 @@ VerifyCheck judge(std::string group, std::string name, std::string closed_form, 
     c.passed = std::isfinite(m.mean) && std::isfinite(m.standard_error) &&
                std::abs(m.mean - expected) <= c.tolerance;
     c.detail = std::move(detail);
+    auto note = [&](const std::string& why) {
+        c.passed = false;
+        c.detail = why + (c.detail.empty() ? "" : "; " + c.detail);
+    };
+    if (expected != 0 && m.standard_error > o.max_relative_standard_error * std::abs(expected))
+        note(fmt::format("too noisy to decide: σ = {:.2g} is above {:g}% of the expected value",
+                         m.standard_error, 100 * o.max_relative_standard_error));
+    if (m.dropped > 0) note(fmt::format("the render dropped {} non-finite samples", m.dropped));
     return c;
 }
 

@@ -4,7 +4,9 @@
 //   |measured - expected| <= k σ + ε |expected|,
 // k = 4 standard errors (a false alarm once in 16 000 checks for a normal estimate) and ε a stated
 // allowance for float rounding or a known, bounded bias; a deterministic computation has σ = 0 and only ε.
-// Seeds are fixed, so a run gives the same figures every time.
+// An estimate too noisy to decide fails too: σ above 1% of the expected value (a diverging estimator, a
+// path throughput that grows without bound, has a huge σ that 4σ would cover), and so does a render that
+// dropped non-finite samples. Seeds are fixed, so a run gives the same figures every time.
 #pragma once
 
 #include <cstdint>
@@ -27,10 +29,12 @@ struct VerifyOptions {
     int threads = 0; // renders: 0 for all hardware threads
     std::uint64_t seed = 1;
     double sigmas = 4;
+    double max_relative_standard_error = 0.01;
 };
 
 struct Estimate {
     double mean = 0, standard_error = 0;
+    std::uint64_t dropped = 0; // non-finite samples the render dropped
 };
 
 // The check with the tolerance k σ + ε |expected| (k = options.sigmas); a non-finite figure fails.
