@@ -9,6 +9,7 @@
 
 #include <fmt/core.h>
 
+#include "brdf_args.h"
 #include "commands.h"
 #include "illum/analysis/audit.h"
 #include "illum/analysis/gallery.h"
@@ -24,50 +25,6 @@
 namespace illum::cli {
 
 namespace {
-
-std::map<std::string, std::string> parse_kv(const std::vector<std::string>& items) {
-    std::map<std::string, std::string> out;
-    for (const auto& s : items) {
-        auto eq = s.find('=');
-        if (eq == std::string::npos || eq == 0) throw Error("--param expects name=value, got '" + s + "'");
-        out[s.substr(0, eq)] = s.substr(eq + 1);
-    }
-    return out;
-}
-
-Vector3f parse_angles(const std::string& s, const char* what) {
-    auto comma = s.find(',');
-    try {
-        std::size_t n1 = 0, n2 = 0;
-        double t = std::stod(s.substr(0, comma), &n1);
-        double p = comma == std::string::npos ? 0.0 : std::stod(s.substr(comma + 1), &n2);
-        if (n1 != s.substr(0, comma).size() || (comma != std::string::npos && n2 != s.size() - comma - 1))
-            throw std::invalid_argument("trailing");
-        if (!(t >= 0 && t <= 180) || !std::isfinite(p)) throw std::invalid_argument("range");
-        return direction_deg(t, p);
-    } catch (const std::exception&) {
-        throw Error(std::string(what) + " expects θ,φ in degrees with θ in [0, 180], got '" + s + "'");
-    }
-}
-
-std::vector<double> parse_list(const std::string& s, const char* what) {
-    std::vector<double> v;
-    std::size_t start = 0;
-    while (start <= s.size()) {
-        auto p = s.find(',', start);
-        std::string part = s.substr(start, p == std::string::npos ? std::string::npos : p - start);
-        try {
-            std::size_t n = 0;
-            v.push_back(std::stod(part, &n));
-            if (n != part.size()) throw std::invalid_argument("trailing");
-        } catch (const std::exception&) {
-            throw Error(std::string(what) + ": '" + part + "' is not a number");
-        }
-        if (p == std::string::npos) break;
-        start = p + 1;
-    }
-    return v;
-}
 
 void list_models() {
     for (const auto& m : bxdf_models()) {
@@ -102,7 +59,9 @@ struct BrdfOptions {
 
 void add_brdf_command(CLI::App& app) {
     auto opt = std::make_shared<BrdfOptions>();
-    CLI::App* brdf = app.add_subcommand("brdf", "reflection models: list, eval, albedo, audit, fresnel");
+    CLI::App* brdf = app.add_subcommand(
+        "brdf",
+        "reflection models: list, eval, albedo, audit, fresnel, gallery, plot, compare, fit, tabulate");
     brdf->require_subcommand(1);
 
     brdf->add_subcommand("list", "name every model with its parameters, defaults and ranges")->callback([] {
@@ -296,6 +255,9 @@ void add_brdf_command(CLI::App& app) {
                        t, fe, fs, fs - fe, ce.r, ce.g, ce.b, cs.r, cs.g, cs.b, d.r, d.g, d.b);
         }
     });
+
+    add_brdf_plot_commands(*brdf);
+    add_brdf_fit_command(*brdf);
 }
 
 } // namespace illum::cli

@@ -57,5 +57,9 @@ void add_diff_command(CLI::App& app);
 void add_info_command(CLI::App& app);
 void add_envmap_command(CLI::App& app);
 void add_photons_command(CLI::App& app);
+void add_verify_command(CLI::App& app);
+// Subcommands of `illum brdf` in files of their own.
+void add_brdf_plot_commands(CLI::App& brdf);
+void add_brdf_fit_command(CLI::App& brdf);
 
 } // namespace illum::cli

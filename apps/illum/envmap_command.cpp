@@ -6,14 +6,16 @@
 #include <fmt/core.h>
 
 #include "commands.h"
+#include "illum/analysis/envmap_plot.h"
 #include "illum/envmap/irradiance.h"
 #include "illum/envmap/prefilter.h"
 #include "illum/envmap/resample.h"
 #include "illum/envmap/spherical_harmonics.h"
+#include "illum/image/drawing_io.h"
 #include "illum/image/file_bytes.h"
 #include "illum/image/image_io.h"
-#include "illum/util/progress.h"
 #include "illum/util/error.h"
+#include "illum/util/progress.h"
 
 namespace illum::cli {
 
@@ -23,6 +25,8 @@ struct EnvArgs {
     std::string input, output, from, to, json, irradiance;
     int size = 0, levels = 6, samples = 256, lut_size = 128;
     bool quiet = false;
+    float exposure = 0, scale = 1;
+    bool fixed_exposure = false;
 };
 
 const char* kLayouts = "latlong, octahedral, mirrorball, angular or cubemap";
@@ -125,10 +129,26 @@ void run_prefilter(const EnvArgs& a) {
     fmt::print("{}  {}x{}  (x = N.V, y = roughness; R = scale, G = bias)\n", path, lut.width(), lut.height());
 }
 
+void run_show(const EnvArgs& a) {
+    if (!is_drawing_extension(a.output))
+        throw Error(fmt::format("-o \"{}\": the figure is written as .svg or .png", a.output));
+    EnvironmentMap in = load(a);
+    warn_sanitized(in, a.input);
+    EnvmapFigureOptions opt;
+    if (a.size > 0) opt.panel_height = a.size;
+    opt.auto_exposure = !a.fixed_exposure;
+    opt.exposure_stops = a.exposure;
+    EnvmapFigure fig = envmap_figure(in, std::filesystem::path(a.input).filename().string(), opt);
+    write_drawing(fig.drawing, a.output, a.scale);
+    fmt::print("SH irradiance against brute force: mean |E_SH - E| / mean E = {:.2f}%; wrote {}\n",
+               100 * fig.sh_mean_difference, a.output);
+}
+
 } // namespace
 
 void add_envmap_command(CLI::App& app) {
-    CLI::App* cmd = app.add_subcommand("envmap", "Environment-map tools: convert, sh, irradiance, prefilter");
+    CLI::App* cmd =
+        app.add_subcommand("envmap", "Environment-map tools: convert, sh, irradiance, prefilter, show");
     cmd->require_subcommand(1);
     auto common = [](CLI::App* c, EnvArgs& a) {
         c->add_option("--from", a.from,
@@ -187,6 +207,20 @@ void add_envmap_command(CLI::App& app) {
         c->add_option("--lut-size", a->lut_size, "BRDF table size (default 128)")->check(positive_integer());
         common(c, *a);
         c->callback([a] { run_prefilter(*a); });
+    }
+    {
+        auto a = std::make_shared<EnvArgs>();
+        CLI::App* c = cmd->add_subcommand(
+            "show", "Draw the map beside its SH irradiance and brute-force irradiance (SVG or PNG)");
+        c->add_option("input", a->input, "Input map")->required();
+        c->add_option("-o,--output", a->output, "The figure: .svg or .png")->required();
+        c->add_option("--size", a->size, "Height of each latlong panel (default 180)")
+            ->check(positive_integer());
+        c->add_option("--exposure", a->exposure, "Exposure in stops, added to the automatic one");
+        c->add_flag("--fixed-exposure", a->fixed_exposure, "No automatic exposure: only --exposure");
+        c->add_option("--scale", a->scale, "PNG pixels per SVG unit")->check(CLI::Range(0.25, 8.0));
+        common(c, *a);
+        c->callback([a] { run_show(*a); });
     }
 }
 

@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
     illum::cli::add_info_command(app);
     illum::cli::add_envmap_command(app);
     illum::cli::add_photons_command(app);
+    illum::cli::add_verify_command(app);
     try {
         app.parse(argc, argv);
         if (app.get_subcommands().empty()) {

@@ -220,6 +220,8 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
                 ++n;
             }
             double mean = sd / n, se = std::sqrt(std::max(0.0, sd2 / n - mean * mean) / n), mf = sf / n;
+            c.r.value = mf > 0 ? mean / mf : 0; // relative to the mean f
+            c.r.standard_error = mf > 0 ? se / mf : 0;
             std::string d = fmt::format("stochastic: mean f(n,g) - f(g,n) = {:.4g} ± {:.2g} (mean f {:.4g})",
                                         mean, se, mf);
             if (std::abs(mean) > 4.5 * se)
@@ -263,6 +265,7 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
                 }
                 ++tested;
             }
+            c.r.value = worst;
             std::string d =
                 fmt::format("{} pairs{}, worst relative difference {:.2g}", tested,
                             transmissive ? " incl. transmission (generalised, adjoint)" : "", worst);
@@ -350,7 +353,7 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
     // 4. Energy: albedo <= 1 (= 1 for lossless models), MC (sample weights) against quadrature of f.
     {
         Check e("energy"), q("energy-quadrature");
-        double worst_albedo = 0;
+        double worst_albedo = 0, worst_se = 0;
         std::string quad_detail;
         for (std::size_t k = 0; k < wos.size(); ++k) {
             Vector3f wo = wos[k];
@@ -359,7 +362,10 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
             albedo_monte_carlo(bxdf, wo, o.energy_samples, o.seed + 7 * k + 1, &mean, &se, kImp, &ns_mean,
                                &ns_se);
             for (int ch = 0; ch < 3; ++ch) {
-                worst_albedo = std::max(worst_albedo, mean[ch]);
+                if (mean[ch] > worst_albedo) {
+                    worst_albedo = mean[ch];
+                    worst_se = se[ch];
+                }
                 if (mean[ch] > 1 + 4 * se[ch] + 1e-3) {
                     std::string d =
                         fmt::format("albedo {:.4f} ± {:.4f} > 1 at wo {}", mean[ch], se[ch], dir_str(wo));
@@ -389,6 +395,8 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
                 }
             }
         }
+        e.r.value = worst_albedo;
+        e.r.standard_error = worst_se;
         if (e.r.status == CheckStatus::Pass)
             e.r.detail =
                 fmt::format("max albedo {:.4f}{}", worst_albedo, traits.lossless ? " (lossless: = 1)" : "");
@@ -442,32 +450,41 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
     return result;
 }
 
+namespace {
+
+AuditTraits case_traits(const ModelSpec& model, const AuditCase& c, const ParamValues& v) {
+    AuditTraits t;
+    t.delta = model.delta;
+    t.lossless = c.lossless;
+    t.non_physical = model.non_physical;
+    t.stochastic = model.stochastic;
+    t.eta = model_eta(model, v);
+    return t;
+}
+
+} // namespace
+
+AuditResult audit_case(const ModelSpec& model, const AuditCase& c, const AuditOptions& options) {
+    ParamValues v = resolve_params(model, c.params);
+    auto bxdf = model.make(v);
+    AuditResult r = audit_bxdf(*bxdf, case_traits(model, c, v), options);
+    r.model = model.name;
+    for (const auto& [k, value] : c.params) r.params += (r.params.empty() ? "" : " ") + k + "=" + value;
+    if (r.params.empty()) r.params = "(defaults)";
+    return r;
+}
+
 std::vector<AuditResult> audit_model(const ModelSpec& model, AuditOptions options) {
+    if (options.chi2_tests <= 1) {
+        int tests = 0;
+        for (const auto& c : model.audit_grid) {
+            ParamValues v = resolve_params(model, c.params);
+            tests += count_chi2_tests(*model.make(v), case_traits(model, c, v), options);
+        }
+        options.chi2_tests = std::max(1, tests);
+    }
     std::vector<AuditResult> out;
-    std::vector<std::unique_ptr<BxDF>> bxdfs;
-    std::vector<AuditTraits> traits;
-    int tests = 0;
-    for (const auto& c : model.audit_grid) {
-        ParamValues v = resolve_params(model, c.params);
-        bxdfs.push_back(model.make(v));
-        AuditTraits t;
-        t.delta = model.delta;
-        t.lossless = c.lossless;
-        t.non_physical = model.non_physical;
-        t.stochastic = model.stochastic;
-        t.eta = model_eta(model, v);
-        traits.push_back(t);
-        tests += count_chi2_tests(*bxdfs.back(), t, options);
-    }
-    if (options.chi2_tests <= 1) options.chi2_tests = std::max(1, tests);
-    for (std::size_t i = 0; i < bxdfs.size(); ++i) {
-        AuditResult r = audit_bxdf(*bxdfs[i], traits[i], options);
-        r.model = model.name;
-        for (const auto& [k, v] : model.audit_grid[i].params)
-            r.params += (r.params.empty() ? "" : " ") + k + "=" + v;
-        if (r.params.empty()) r.params = "(defaults)";
-        out.push_back(std::move(r));
-    }
+    for (const auto& c : model.audit_grid) out.push_back(audit_case(model, c, options));
     return out;
 }
 

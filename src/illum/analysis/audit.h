@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 namespace illum {
 
 struct ModelSpec;
+struct AuditCase;
 
 enum class CheckStatus { Pass, Fail, Skip, Info };
 const char* to_string(CheckStatus s);
@@ -21,6 +23,10 @@ struct CheckResult {
     std::string name;
     CheckStatus status = CheckStatus::Pass;
     std::string detail;
+    // The figure the check judged, where it has one (NaN otherwise): energy, the largest albedo over the
+    // directions and channels and its standard error; reciprocity, the worst relative difference.
+    double value = std::numeric_limits<double>::quiet_NaN();
+    double standard_error = std::numeric_limits<double>::quiet_NaN();
 };
 
 // What the audit needs to know about the model besides its BxDF.
@@ -76,5 +82,7 @@ int count_chi2_tests(const BxDF& bxdf, const AuditTraits& traits, const AuditOpt
 // Audits every case of a registered model's parameter grid (Sidak over the grid's chi-square tests when
 // options.chi2_tests <= 1; pass a larger number to correct over a bigger family).
 std::vector<AuditResult> audit_model(const ModelSpec& model, AuditOptions options);
+// One case of a model's grid with the options as given (options.chi2_tests is the family's size).
+AuditResult audit_case(const ModelSpec& model, const AuditCase& c, const AuditOptions& options);
 
 } // namespace illum

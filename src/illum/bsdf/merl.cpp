@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "illum/image/file_bytes.h"
 #include "illum/math/warp.h"
 #include "illum/util/error.h"
 
@@ -86,35 +87,45 @@ MerlTable MerlTable::read(const std::string& path) {
 }
 
 void MerlTable::write(const std::string& path) const {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw Error("cannot write MERL file '" + path + "'");
+    std::string bytes(sizeof(std::int32_t) * 3 + data.size() * sizeof(double), '\0');
     std::int32_t dims[3] = {kThetaH, kThetaD, kPhiD};
-    out.write(reinterpret_cast<const char*>(dims), sizeof dims);
-    out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size() * sizeof(double)));
-    if (!out) throw Error("failed writing MERL file '" + path + "'");
+    std::memcpy(bytes.data(), dims, sizeof dims);
+    std::memcpy(bytes.data() + sizeof dims, data.data(), data.size() * sizeof(double));
+    write_file_atomically(path, bytes); // throws illum::Error naming the file
+}
+
+bool MerlTable::bin_directions(int ih, int id, int ip, Vector3f* wo, Vector3f* wi) {
+    double u = (ih + 0.5) / kThetaH;
+    float theta_h = float(u * u * (kPiD / 2));
+    Vector3f h(std::sin(theta_h), 0, std::cos(theta_h));
+    float theta_d = float((id + 0.5) / kThetaD * (kPiD / 2));
+    float phi_d = float((ip + 0.5) / kPhiD * kPiD);
+    Vector3f d = spherical_direction(std::sin(theta_d), std::cos(theta_d), phi_d);
+    *wi = rotate_y(d, theta_h);
+    *wo = reflect(*wi, h);
+    if (wi->z <= 0 || wo->z <= 0) return false;
+    *wo = normalize(*wo);
+    *wi = normalize(*wi);
+    return true;
+}
+
+double MerlTable::value(int ih, int id, int ip, int channel) const {
+    std::size_t i = std::size_t(ip + kPhiD * (id + kThetaD * ih)) + std::size_t(channel) * std::size_t(kSize);
+    return data[i] * kScale[channel];
 }
 
 MerlTable MerlTable::from_bxdf(const BxDF& bxdf) {
     MerlTable t;
     t.data.assign(3 * std::size_t(kSize), -1.0);
-    for (int ih = 0; ih < kThetaH; ++ih) {
-        double u = (ih + 0.5) / kThetaH;
-        float theta_h = float(u * u * (kPiD / 2));
-        Vector3f h(std::sin(theta_h), 0, std::cos(theta_h));
-        for (int id = 0; id < kThetaD; ++id) {
-            float theta_d = float((id + 0.5) / kThetaD * (kPiD / 2));
+    for (int ih = 0; ih < kThetaH; ++ih)
+        for (int id = 0; id < kThetaD; ++id)
             for (int ip = 0; ip < kPhiD; ++ip) {
-                float phi_d = float((ip + 0.5) / kPhiD * kPiD);
-                Vector3f d = spherical_direction(std::sin(theta_d), std::cos(theta_d), phi_d);
-                Vector3f wi = rotate_y(d, theta_h);
-                Vector3f wo = reflect(wi, h);
-                if (wi.z <= 0 || wo.z <= 0) continue;
-                Color3 f = bxdf.f(normalize(wo), normalize(wi), TransportMode::Radiance).rgb();
+                Vector3f wo, wi;
+                if (!bin_directions(ih, id, ip, &wo, &wi)) continue;
+                Color3 f = bxdf.f(wo, wi, TransportMode::Radiance).rgb();
                 int i = ip + kPhiD * (id + kThetaD * ih);
                 for (int c = 0; c < 3; ++c) t.data[i + c * std::size_t(kSize)] = f[c] / kScale[c];
             }
-        }
-    }
     return t;
 }
 

@@ -28,10 +28,16 @@ struct MerlTable {
     // Reads a `.binary` file; throws illum::Error naming the file and the problem (missing, truncated,
     // wrong dimensions).
     static MerlTable read(const std::string& path);
-    // Writes the table in the MERL format.
+    // Writes the table in the MERL format (atomically: a temporary file renamed over the path).
     void write(const std::string& path) const;
     // Tabulates a BxDF's reflection at the bin centres (the inverse of the lookup), for tests.
     static MerlTable from_bxdf(const BxDF& bxdf);
+
+    // The directions (wo, wi) at the centre of bin (θh index, θd index, φd index), as from_bxdf tabulates
+    // them; false when one is at or below the horizon.
+    static bool bin_directions(int ih, int id, int ip, Vector3f* wo, Vector3f* wi);
+    // The (scaled) value stored for a bin, per channel; negative for missing data.
+    double value(int ih, int id, int ip, int channel) const;
 
     // The (scaled) BRDF value for a pair of directions on +z.
     Color3 lookup(Vector3f wo, Vector3f wi) const;
