@@ -34,7 +34,7 @@ def main():
     ap.add_argument("--res", default="1024x1024")
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--shares", type=int, default=64)
-    ap.add_argument("--share-spp", type=int, default=2048)
+    ap.add_argument("--share-spp", type=int, default=4096)
     ap.add_argument("--share-res", default="1024x768")
     ap.add_argument("--share-threads", type=int, default=2)
     ap.add_argument("--every", type=int, default=1,
@@ -59,7 +59,7 @@ def main():
         walls, renders, setups = [], [], []
         for r in range(0, a.shares, a.every):
             cmd = [illum, "render", "--resolution", a.share_res, "--spp", str(a.share_spp), "--threads",
-                   str(a.share_threads), "-q", "--share", f"{r}/{a.shares}", "-o", "share.exr", "--stats",
+                   str(a.share_threads), "-q", "--share", f"{r}/{a.shares}", "-o", "share.pfm", "--stats",
                    "share.json"]
             walls.append(wall(cmd, d))
             s = json.load(open(os.path.join(d, "share.json")))
@@ -80,7 +80,8 @@ def main():
         print(f"per rank: wall {w:.3f} s, render {rnd:.3f} s (slowest {max(renders):.3f} s), scene setup {st:.3f} s")
         print(f"launcher start-up (mpirun, MPI_Init): {launch:.3f} s")
         print(f"reduction: {step:.4f} s a tree step (2 ranks), {steps * step:.4f} s for {steps} steps")
-        print(f"start-up + reduction: {overhead:.3f} s = {100 * overhead / rnd:.2f}% of the render")
+        print(f"start-up + reduction: {overhead:.3f} s = {100 * overhead / rnd:.2f}% of the render "
+              f"(process {w - rnd:.3f} s, launcher {launch:.3f} s, reduction {steps * step:.3f} s)")
 
 
 if __name__ == "__main__":
