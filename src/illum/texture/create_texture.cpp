@@ -1,5 +1,6 @@
-// pbrt-v4's Texture directive: "float" or "spectrum" textures of type constant, scale, mix, checkerboard
-// (2D) and imagemap; the procedural ones are recognised and approximated by a constant, with a warning.
+// pbrt-v4's Texture directive: "float" or "spectrum" textures of type constant, scale, mix, directionmix,
+// bilerp, checkerboard (2D and 3D) and imagemap, over every pbrt-v4 mapping; the noise-based ones (dots,
+// fbm, marble, windy, wrinkled) and ptex are recognised and approximated by a constant, with a warning.
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -16,11 +17,23 @@ namespace illum {
 
 namespace {
 
-UVMapping mapping(const TextureDesc& t, Diagnostics& diag) {
+// pbrt-v4's TextureMapping2D::Create: "uv" (uscale, vscale, udelta, vdelta), "spherical", "cylindrical"
+// and "planar" (v1, v2, udelta, vdelta), the last three in the texture's space (the inverse of the CTM at the
+// Texture directive).
+TextureMapping2D mapping(const TextureDesc& t) {
     std::string m = t.params.get_string("mapping", "uv");
-    if (m != "uv") diag.unsupported(t.loc, fmt::format("texture mapping \"{}\" is replaced by \"uv\"", m));
-    return {t.params.get_float("uscale", 1), t.params.get_float("vscale", 1), t.params.get_float("udelta", 0),
-            t.params.get_float("vdelta", 0)};
+    const Transform texture_from_world = t.world_from_texture.inverse();
+    if (m == "uv")
+        return TextureMapping2D::uv(t.params.get_float("uscale", 1), t.params.get_float("vscale", 1),
+                                    t.params.get_float("udelta", 0), t.params.get_float("vdelta", 0));
+    if (m == "spherical") return TextureMapping2D::spherical(texture_from_world);
+    if (m == "cylindrical") return TextureMapping2D::cylindrical(texture_from_world);
+    if (m == "planar")
+        return TextureMapping2D::planar(texture_from_world, t.params.get_vector3("v1").value_or(Vector3f(1, 0, 0)),
+                                        t.params.get_vector3("v2").value_or(Vector3f(0, 1, 0)),
+                                        t.params.get_float("udelta", 0), t.params.get_float("vdelta", 0));
+    throw Error(t.params.find("mapping")->loc, fmt::format("unknown texture mapping \"{}\" (use uv, spherical, "
+                                                           "cylindrical or planar)", m));
 }
 
 bool is_eight_bit(const std::string& path) {
@@ -108,14 +121,42 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
                                                                            c("tex2", Color3(1.0f)), a));
     } else if (t.type == "checkerboard") {
         int dim = t.params.get_int("dimension", 2);
-        if (dim != 2) diag.unsupported(t.loc, "a 3D checkerboard is rendered as a 2D one");
-        UVMapping m = mapping(t, diag);
+        if (dim != 2 && dim != 3)
+            throw Error(t.params.find("dimension")->loc,
+                        fmt::format("checkerboard dimension must be 2 or 3, not {}", dim));
+        if (dim == 3) {
+            TextureMapping3D m(t.world_from_texture.inverse());
+            if (is_float)
+                ft = params.own(
+                    std::make_unique<Checkerboard3D<FloatTexture, float>>(f("tex1", 1), f("tex2", 0), m));
+            else
+                ct = params.own(std::make_unique<Checkerboard3D<ColorTexture, Color3>>(
+                    c("tex1", Color3(1.0f)), c("tex2", Color3(0.0f)), m));
+        } else {
+            TextureMapping2D m = mapping(t);
+            if (is_float)
+                ft = params.own(
+                    std::make_unique<Checkerboard2D<FloatTexture, float>>(f("tex1", 1), f("tex2", 0), m));
+            else
+                ct = params.own(std::make_unique<Checkerboard2D<ColorTexture, Color3>>(
+                    c("tex1", Color3(1.0f)), c("tex2", Color3(0.0f)), m));
+        }
+    } else if (t.type == "bilerp") {
+        TextureMapping2D m = mapping(t);
         if (is_float)
-            ft = params.own(
-                std::make_unique<Checkerboard2D<FloatTexture, float>>(f("tex1", 1), f("tex2", 0), m));
+            ft = params.own(std::make_unique<BilerpTex<FloatTexture, float>>(f("v00", 0), f("v01", 1), f("v10", 0),
+                                                                             f("v11", 1), m));
         else
-            ct = params.own(std::make_unique<Checkerboard2D<ColorTexture, Color3>>(
-                c("tex1", Color3(1.0f)), c("tex2", Color3(0.0f)), m));
+            ct = params.own(std::make_unique<BilerpTex<ColorTexture, Color3>>(
+                c("v00", Color3(0.0f)), c("v01", Color3(1.0f)), c("v10", Color3(0.0f)), c("v11", Color3(1.0f)), m));
+    } else if (t.type == "directionmix") {
+        // pbrt-v4: dir in the texture's space, taken to render space and normalised.
+        Vector3f dir = normalize(t.world_from_texture(t.params.get_vector3("dir").value_or(Vector3f(0, 1, 0))));
+        if (is_float)
+            ft = params.own(std::make_unique<DirectionMixTex<FloatTexture, float>>(f("tex1", 0), f("tex2", 1), dir));
+        else
+            ct = params.own(std::make_unique<DirectionMixTex<ColorTexture, Color3>>(
+                c("tex1", Color3(0.0f)), c("tex2", Color3(1.0f)), dir));
     } else if (t.type == "imagemap") {
         std::string enc = t.params.get_string(
             "encoding", is_eight_bit(t.params.get_string("filename", "")) ? "sRGB" : "linear");
@@ -135,7 +176,7 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
         t.params.get_float("maxanisotropy", 8);
         float scale = t.params.get_float("scale", 1);
         bool invert = t.params.get_bool("invert", false);
-        UVMapping m = mapping(t, diag);
+        TextureMapping2D m = mapping(t);
         if (auto image = load_image(t, enc, params)) {
             ImageTextureData data(std::move(image), w, scale, invert);
             if (is_float)
@@ -147,8 +188,8 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
         } else {
             ct = params.constant(Color3(0.0f));
         }
-    } else if (t.type == "bilerp" || t.type == "directionmix" || t.type == "dots" || t.type == "fbm" ||
-               t.type == "marble" || t.type == "ptex" || t.type == "windy" || t.type == "wrinkled") {
+    } else if (t.type == "dots" || t.type == "fbm" || t.type == "marble" || t.type == "ptex" ||
+               t.type == "windy" || t.type == "wrinkled") {
         diag.unsupported(t.loc, fmt::format("texture \"{}\" is approximated by a constant 0.5", t.type));
         if (is_float)
             ft = params.constant(0.5f);

@@ -1,20 +1,15 @@
-// The textures of pbrt-v4 scene files, as float and colour textures: uv mapping, image (bilinear),
-// checkerboard, scale, mix. Each evaluates without allocating.
+// The textures of pbrt-v4 scene files, as float and colour textures: image (bilinear), checkerboard (2D and
+// 3D), scale, mix, directionmix, bilerp, over the mappings of mapping.h. Each evaluates without allocating.
 #pragma once
 
 #include <cmath>
 #include <memory>
 
 #include "illum/image/image.h"
+#include "illum/texture/mapping.h"
 #include "illum/texture/texture.h"
 
 namespace illum {
-
-// pbrt-v4's "uv" mapping: (s, t) = (uscale u + udelta, vscale v + vdelta).
-struct UVMapping {
-    float su = 1, sv = 1, du = 0, dv = 0;
-    Point2f map(const TextureEvalContext& hit) const { return {su * hit.uv.x + du, sv * hit.uv.y + dv}; }
-};
 
 enum class WrapMode { Repeat, Clamp, Black };
 
@@ -63,31 +58,31 @@ private:
 
 class ImageColorTexture final : public ColorTexture {
 public:
-    ImageColorTexture(ImageTextureData data, UVMapping m) : data_(std::move(data)), m_(m) {}
+    ImageColorTexture(ImageTextureData data, TextureMapping2D m) : data_(std::move(data)), m_(m) {}
     Color3 evaluate(const TextureEvalContext& hit) const override { return data_.lookup(m_.map(hit)); }
 
 private:
     ImageTextureData data_;
-    UVMapping m_;
+    TextureMapping2D m_;
 };
 
 class ImageFloatTexture final : public FloatTexture {
 public:
-    ImageFloatTexture(ImageTextureData data, UVMapping m) : data_(std::move(data)), m_(m) {}
+    ImageFloatTexture(ImageTextureData data, TextureMapping2D m) : data_(std::move(data)), m_(m) {}
     float evaluate(const TextureEvalContext& hit) const override {
         return data_.lookup(m_.map(hit)).average();
     }
 
 private:
     ImageTextureData data_;
-    UVMapping m_;
+    TextureMapping2D m_;
 };
 
 // pbrt-v4's 2D checkerboard: tex1 where floor(s) + floor(t) is even, tex2 elsewhere (no antialiasing).
 template <class Base, class Value>
 class Checkerboard2D final : public Base {
 public:
-    Checkerboard2D(const Base* a, const Base* b, UVMapping m) : a_(a), b_(b), m_(m) {}
+    Checkerboard2D(const Base* a, const Base* b, TextureMapping2D m) : a_(a), b_(b), m_(m) {}
     Value evaluate(const TextureEvalContext& hit) const override {
         Point2f st = m_.map(hit);
         int parity = floor_to_int(st.x) ^ floor_to_int(st.y); // the sum's parity is the xor's
@@ -96,7 +91,61 @@ public:
 
 private:
     const Base *a_, *b_;
-    UVMapping m_;
+    TextureMapping2D m_;
+};
+
+// pbrt-v4's 3D checkerboard: tex1 where floor(x) + floor(y) + floor(z) of the point in texture space is even.
+template <class Base, class Value>
+class Checkerboard3D final : public Base {
+public:
+    Checkerboard3D(const Base* a, const Base* b, TextureMapping3D m) : a_(a), b_(b), m_(m) {}
+    Value evaluate(const TextureEvalContext& hit) const override {
+        Point3f p = m_.map(hit);
+        int parity = floor_to_int(p.x) ^ floor_to_int(p.y) ^ floor_to_int(p.z);
+        return (parity & 1) == 0 ? a_->evaluate(hit) : b_->evaluate(hit);
+    }
+
+private:
+    const Base *a_, *b_;
+    TextureMapping3D m_;
+};
+
+// pbrt-v4 "bilerp": the bilinear interpolation of four corner values over (s, t),
+//   (1-s)(1-t) v00 + s(1-t) v10 + (1-s)t v01 + st v11 (pbrt-v4 does not clamp s, t to [0, 1]).
+template <class Base, class Value>
+class BilerpTex final : public Base {
+public:
+    BilerpTex(const Base* v00, const Base* v01, const Base* v10, const Base* v11, TextureMapping2D m)
+        : v00_(v00), v01_(v01), v10_(v10), v11_(v11), m_(m) {}
+    Value evaluate(const TextureEvalContext& hit) const override {
+        Point2f st = m_.map(hit);
+        float s = st.x, t = st.y;
+        return v00_->evaluate(hit) * ((1 - s) * (1 - t)) + v10_->evaluate(hit) * (s * (1 - t)) +
+               v01_->evaluate(hit) * ((1 - s) * t) + v11_->evaluate(hit) * (s * t);
+    }
+
+private:
+    const Base *v00_, *v01_, *v10_, *v11_;
+    TextureMapping2D m_;
+};
+
+// pbrt-v4 "directionmix": a = |n · dir| (the geometric normal, dir normalised in world space);
+// a tex1 + (1 - a) tex2, each evaluated only where its weight is not 0.
+template <class Base, class Value>
+class DirectionMixTex final : public Base {
+public:
+    DirectionMixTex(const Base* a, const Base* b, Vector3f dir) : a_(a), b_(b), dir_(dir) {}
+    Value evaluate(const TextureEvalContext& hit) const override {
+        float amount = std::abs(dot(Vector3f(hit.n), dir_));
+        Value r = Value(0.0f);
+        if (amount != 0) r = r + a_->evaluate(hit) * amount;
+        if (amount != 1) r = r + b_->evaluate(hit) * (1 - amount);
+        return r;
+    }
+
+private:
+    const Base *a_, *b_;
+    Vector3f dir_;
 };
 
 // pbrt-v4 "scale": tex * scale (scale is a float texture).
