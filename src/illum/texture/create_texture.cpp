@@ -1,6 +1,6 @@
 // pbrt-v4's Texture directive: "float" or "spectrum" textures of type constant, scale, mix, directionmix,
-// bilerp, checkerboard (2D and 3D) and imagemap, over every pbrt-v4 mapping; the noise-based ones (dots,
-// fbm, marble, windy, wrinkled) and ptex are recognised and approximated by a constant, with a warning.
+// bilerp, checkerboard (2D and 3D), imagemap and the noise textures fbm, wrinkled, windy, marble and dots,
+// over every pbrt-v4 mapping; ptex is recognised and approximated by a constant, with a warning.
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "illum/image/image_io.h"
+#include "illum/texture/noise_textures.h"
 #include "illum/texture/pbrt_textures.h"
 #include "illum/texture/texture_params.h"
 
@@ -188,8 +189,36 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
         } else {
             ct = params.constant(Color3(0.0f));
         }
-    } else if (t.type == "dots" || t.type == "fbm" || t.type == "marble" || t.type == "ptex" ||
-               t.type == "windy" || t.type == "wrinkled") {
+    } else if (t.type == "fbm" || t.type == "wrinkled" || t.type == "windy" || t.type == "marble") {
+        // pbrt-v4 has fbm, wrinkled and windy as float textures only, marble as a spectrum texture only.
+        if (is_float == (t.type == "marble"))
+            throw Error(t.loc, fmt::format("\"{}\" is a {} texture in pbrt-v4", t.type,
+                                           t.type == "marble" ? "spectrum" : "float"));
+        TextureMapping3D m(t.world_from_texture.inverse());
+        int octaves = t.params.get_int("octaves", 8);
+        float omega = t.params.get_float("roughness", 0.5f);
+        if (octaves < 0 || octaves > 64)
+            throw Error(t.params.find("octaves")->loc, fmt::format("octaves must be in [0, 64], not {}", octaves));
+        if (t.type == "fbm")
+            ft = params.own(std::make_unique<FbmTexture>(m, octaves, omega));
+        else if (t.type == "wrinkled")
+            ft = params.own(std::make_unique<WrinkledTexture>(m, octaves, omega));
+        else if (t.type == "windy")
+            ft = params.own(std::make_unique<WindyTexture>(m));
+        else
+            ct = params.own(std::make_unique<MarbleTexture>(m, octaves, omega, t.params.get_float("scale", 1),
+                                                            t.params.get_float("variation", 0.2f)));
+    } else if (t.type == "dots") {
+        // As pbrt-v4 (5f7a606) renders it: its Create passes the "inside" parameter where the constructor
+        // takes the texture outside the dots (and "outside" for inside), so a scene's "inside" fills the
+        // space between the dots. Kept, so that scenes render as in pbrt-v4.
+        TextureMapping2D m = mapping(t);
+        if (is_float)
+            ft = params.own(std::make_unique<DotsTex<FloatTexture, float>>(f("outside", 0), f("inside", 1), m));
+        else
+            ct = params.own(std::make_unique<DotsTex<ColorTexture, Color3>>(c("outside", Color3(0.0f)),
+                                                                            c("inside", Color3(1.0f)), m));
+    } else if (t.type == "ptex") {
         diag.unsupported(t.loc, fmt::format("texture \"{}\" is approximated by a constant 0.5", t.type));
         if (is_float)
             ft = params.constant(0.5f);
