@@ -125,6 +125,50 @@ TEST(Filter, SamplesFollowTheFilter) {
     }
 }
 
+// The filters with negative lobes (mitchell, sinc): their samples weighted by f/pdf estimate f's integral over
+// every bin of each axis (the sample mean of w·[x in bin] against the midpoint rule, within 4.5 standard errors
+// plus the table's resolution: pbrt-v4 tabulates f at 32 cells per unit radius).
+void expect_weights_follow(const Filter& f, int axis) {
+    const int bins = 16, n = 400000;
+    const float r = f.radius()[axis], ro = f.radius()[1 - axis];
+    std::vector<double> sum(bins, 0), sum2(bins, 0);
+    PCG32 rng(5);
+    double abs_integral = 0;
+    for (int i = 0; i < n; ++i) {
+        FilterSample s = f.sample({rng.uniform_float(), rng.uniform_float()});
+        ASSERT_LE(std::abs(s.offset[axis]), r * (1 + 1e-5f));
+        int b = std::min(bins - 1, int((s.offset[axis] + r) / (2 * r) * bins));
+        sum[b] += s.weight;
+        sum2[b] += double(s.weight) * s.weight;
+        abs_integral += std::abs(s.weight) / n;
+    }
+    for (int b = 0; b < bins; ++b) {
+        double expected = 0;
+        const int k = 64;
+        for (int i = 0; i < k; ++i)
+            for (int j = 0; j < 4 * k; ++j) {
+                float x = -r + 2 * r * (b + (i + 0.5f) / k) / bins, y = -ro + 2 * ro * (j + 0.5f) / (4 * k);
+                expected += f.evaluate(axis == 0 ? Vector2f{x, y} : Vector2f{y, x});
+            }
+        expected *= (2 * r / bins / k) * (2 * ro / (4 * k));
+        double mean = sum[b] / n, se = std::sqrt((sum2[b] / n - mean * mean) / n);
+        EXPECT_NEAR(mean, expected, 4.5 * se + 2e-3 * abs_integral) << "bin " << b << " axis " << axis;
+    }
+}
+
+TEST(Filter, NegativeLobedFiltersWeighTheirSamples) {
+    for (int axis = 0; axis < 2; ++axis) {
+        expect_weights_follow(MitchellFilter({2, 2}), axis);
+        expect_weights_follow(MitchellFilter({1.5f, 2.5f}, 0.0f, 0.5f), axis); // Catmull-Rom
+        expect_weights_follow(LanczosSincFilter({4, 4}, 3), axis);
+    }
+    // Mitchell-Netravali filters integrate to 1 over |x| < 2 per axis: ∫f = (r/2)² for radius r.
+    EXPECT_NEAR(MitchellFilter::mitchell_1d(0, 1.0f / 3, 1.0f / 3), 16.0f / 18, 1e-6f);
+    double integral = 0;
+    for (int i = 0; i < 4000; ++i) integral += MitchellFilter::mitchell_1d(-2 + 4 * (i + 0.5) / 4000, 0.3f, 0.35f) * 4 / 4000;
+    EXPECT_NEAR(integral, 1, 1e-5);
+}
+
 // A tent sampled as if it were a box.
 struct BoxSampledTent final : Filter {
     BoxSampledTent() : Filter({1, 1}) {}

@@ -30,13 +30,20 @@ FilmSettings create_film(const EntityDesc& film, Diagnostics& diag) {
     return f;
 }
 
-std::unique_ptr<Filter> create_filter(const EntityDesc& f, Diagnostics& diag) {
+std::unique_ptr<Filter> create_filter(const EntityDesc& f, Diagnostics& /*diag*/) {
     Vector2f radius{f.params.get_float("xradius", -1), f.params.get_float("yradius", -1)};
     if (f.type == "box" || f.type == "triangle" || f.type == "gaussian")
         return make_filter(f.type, radius, f.params.get_float("sigma", 0.5f));
-    if (f.type == "mitchell" || f.type == "sinc") {
-        diag.unsupported(f.loc, fmt::format("pixel filter \"{}\" is approximated by a gaussian", f.type));
-        return make_filter("gaussian", {1.5f, 1.5f});
+    auto pick = [&](Vector2f def) {
+        return Vector2f{radius.x > 0 ? radius.x : def.x, radius.y > 0 ? radius.y : def.y};
+    };
+    if (f.type == "mitchell")
+        return std::make_unique<MitchellFilter>(pick({2, 2}), f.params.get_float("B", 1.0f / 3),
+                                                f.params.get_float("C", 1.0f / 3));
+    if (f.type == "sinc") {
+        float tau = f.params.get_float("tau", 3);
+        if (!(tau > 0)) throw Error(f.params.find("tau")->loc, "the sinc filter's tau must be positive");
+        return std::make_unique<LanczosSincFilter>(pick({4, 4}), tau);
     }
     throw Error(f.loc, fmt::format("unknown pixel filter \"{}\"", f.type));
 }

@@ -1,5 +1,6 @@
 #include "illum/camera/filter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -52,6 +53,70 @@ FilterSample GaussianFilter::sample(Point2f u) const {
     return {{sample_axis(u.x, radius_.x), sample_axis(u.y, radius_.y)}, 1};
 }
 
+void TabulatedFilter::tabulate() {
+    nx_ = std::max(1, int(32 * radius_.x));
+    ny_ = std::max(1, int(32 * radius_.y));
+    f_.resize(std::size_t(nx_) * std::size_t(ny_));
+    std::vector<float> magnitude(f_.size());
+    for (int y = 0; y < ny_; ++y)
+        for (int x = 0; x < nx_; ++x) {
+            Vector2f p{(2 * (x + 0.5f) / nx_ - 1) * radius_.x, (2 * (y + 0.5f) / ny_ - 1) * radius_.y};
+            float v = evaluate(p);
+            f_[std::size_t(y) * nx_ + x] = v;
+            magnitude[std::size_t(y) * nx_ + x] = std::abs(v);
+        }
+    distribution_ = Distribution2D(magnitude, nx_, ny_);
+}
+
+FilterSample TabulatedFilter::sample(Point2f u) const {
+    float pdf = 0;
+    Point2f q = distribution_.sample(u, &pdf); // density per unit area of [0, 1)²
+    int x = std::min(int(q.x * nx_), nx_ - 1), y = std::min(int(q.y * ny_), ny_ - 1);
+    // Per unit area of the filter's domain, 2r_x × 2r_y pixels.
+    float pdf_area = pdf / (4 * radius_.x * radius_.y);
+    float f = f_[std::size_t(y) * nx_ + x];
+    return {{(2 * q.x - 1) * radius_.x, (2 * q.y - 1) * radius_.y}, pdf_area > 0 ? f / pdf_area : 0.0f};
+}
+
+MitchellFilter::MitchellFilter(Vector2f radius, float b, float c) : TabulatedFilter(radius), b_(b), c_(c) {
+    tabulate();
+}
+
+float MitchellFilter::mitchell_1d(float x, float b, float c) {
+    x = std::abs(x);
+    if (x <= 1)
+        return ((12 - 9 * b - 6 * c) * x * x * x + (-18 + 12 * b + 6 * c) * x * x + (6 - 2 * b)) / 6;
+    if (x <= 2)
+        return ((-b - 6 * c) * x * x * x + (6 * b + 30 * c) * x * x + (-12 * b - 48 * c) * x + (8 * b + 24 * c)) /
+               6;
+    return 0;
+}
+
+float MitchellFilter::evaluate(Vector2f p) const {
+    return mitchell_1d(2 * p.x / radius_.x, b_, c_) * mitchell_1d(2 * p.y / radius_.y, b_, c_);
+}
+
+LanczosSincFilter::LanczosSincFilter(Vector2f radius, float tau) : TabulatedFilter(radius), tau_(tau) {
+    tabulate();
+}
+
+namespace {
+
+float sinc(float x) {
+    if (std::abs(x) < 1e-5f) return 1 - kPi * kPi * x * x / 6; // sin(πx)/(πx) ≈ 1 - (πx)²/6
+    return std::sin(kPi * x) / (kPi * x);
+}
+
+float windowed_sinc(float x, float radius, float tau) {
+    return std::abs(x) > radius ? 0 : sinc(x) * sinc(x / tau);
+}
+
+} // namespace
+
+float LanczosSincFilter::evaluate(Vector2f p) const {
+    return windowed_sinc(p.x, radius_.x, tau_) * windowed_sinc(p.y, radius_.y, tau_);
+}
+
 std::unique_ptr<Filter> make_filter(const std::string& name, Vector2f radius, float sigma) {
     auto pick = [&](Vector2f def) {
         return Vector2f{radius.x > 0 ? radius.x : def.x, radius.y > 0 ? radius.y : def.y};
@@ -59,7 +124,9 @@ std::unique_ptr<Filter> make_filter(const std::string& name, Vector2f radius, fl
     if (name == "box") return std::make_unique<BoxFilter>(pick({0.5f, 0.5f}));
     if (name == "triangle") return std::make_unique<TriangleFilter>(pick({2, 2}));
     if (name == "gaussian") return std::make_unique<GaussianFilter>(pick({1.5f, 1.5f}), sigma);
-    throw Error("unknown pixel filter \"" + name + "\" (use box, triangle or gaussian)");
+    if (name == "mitchell") return std::make_unique<MitchellFilter>(pick({2, 2}));
+    if (name == "sinc") return std::make_unique<LanczosSincFilter>(pick({4, 4}));
+    throw Error("unknown pixel filter \"" + name + "\" (use box, triangle, gaussian, mitchell or sinc)");
 }
 
 } // namespace illum

@@ -1,12 +1,14 @@
 // Pixel reconstruction filters, sampled rather than splatted: each camera sample is offset from its
 // pixel's center with density proportional to |f| and weighted by f/pdf (1 for the positive filters
-// here), so a sample contributes to its own pixel only and the image is independent of tile order and
+// sampled exactly, ±∫|f| for the tabulated ones with negative lobes), so a sample contributes to its own pixel only and the image is independent of tile order and
 // thread count (filter importance sampling; Ernst et al. 2006, as in pbrt-v4).
 #pragma once
 
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "illum/math/distribution.h"
 #include "illum/math/vector.h"
 
 namespace illum {
@@ -68,6 +70,46 @@ public:
 private:
     float sample_axis(float u, float r) const;
     float sigma_;
+};
+
+// Filters with negative lobes, sampled as pbrt-v4's FilterSampler does: f tabulated at the centres of 32
+// cells per unit of radius in each axis, a piecewise-constant density ∝ |f| over the cells, and the weight
+// f(cell) / pdf (so ±∫|f| up to the table's resolution). A subclass calls tabulate() once constructed.
+class TabulatedFilter : public Filter {
+public:
+    using Filter::Filter;
+    FilterSample sample(Point2f u) const override;
+
+protected:
+    void tabulate();
+
+private:
+    int nx_ = 0, ny_ = 0;
+    std::vector<float> f_;
+    Distribution2D distribution_;
+};
+
+// Mitchell & Netravali 1988, "Reconstruction Filters in Computer Graphics": the cubic k(x) with parameters
+// B, C on |x| < 2, per axis at 2x/r (pbrt-v4's "mitchell": radius 2, B = C = 1/3).
+class MitchellFilter final : public TabulatedFilter {
+public:
+    MitchellFilter(Vector2f radius = {2, 2}, float b = 1.0f / 3, float c = 1.0f / 3);
+    float evaluate(Vector2f p) const override;
+    static float mitchell_1d(float x, float b, float c);
+
+private:
+    float b_, c_;
+};
+
+// The Lanczos-windowed sinc, sinc(x) sinc(x/τ) for |x| <= r per axis, sinc(x) = sin(πx)/(πx)
+// (pbrt-v4's "sinc": radius 4, tau 3).
+class LanczosSincFilter final : public TabulatedFilter {
+public:
+    explicit LanczosSincFilter(Vector2f radius = {4, 4}, float tau = 3);
+    float evaluate(Vector2f p) const override;
+
+private:
+    float tau_;
 };
 
 // Makes a filter by pbrt-v4 name ("box", "triangle", "gaussian"); radius <= 0 takes the default.
