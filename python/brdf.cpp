@@ -154,6 +154,25 @@ std::vector<py::ssize_t> shape(bool single, std::size_t n, py::ssize_t k) {
     return k ? std::vector<py::ssize_t>{py::ssize_t(n), k} : std::vector<py::ssize_t>{py::ssize_t(n)};
 }
 
+// Runs body(i, wo, wi) on the rows whose two directions are unit vectors with wo off the surface's plane
+// (the renderer's BSDF gives nothing in the plane) and zero(i) on the others, in parallel; then throws for
+// the first row whose direction was not a unit vector.
+template <class Body, class Zero>
+void over_direction_pairs(const Rows& wi, const Rows& wo, std::size_t n, Body&& body, Zero&& zero) {
+    FirstBad wi_bad, wo_bad;
+    parallel_rows(n, [&](std::size_t i) {
+        Vector3f a, b;
+        bool ok_i = unit_direction(row(wi, i, 3), &a), ok_o = unit_direction(row(wo, i, 3), &b);
+        if (!ok_i) wi_bad.note(i);
+        if (!ok_o) wo_bad.note(i);
+        if (ok_i && ok_o && b.z != 0)
+            body(i, b, a);
+        else
+            zero(i);
+    });
+    if (wi_bad.any() || wo_bad.any()) throw_bad_direction(wi_bad, wo_bad);
+}
+
 py::array_t<float> eval(const Model& m, const py::handle& wi_in, const py::handle& wo_in,
                         const std::string& mode_in) {
     TransportMode mode = parse_mode(mode_in);
@@ -161,20 +180,14 @@ py::array_t<float> eval(const Model& m, const py::handle& wi_in, const py::handl
     std::size_t n = common_rows({{&wi, "wi"}, {&wo, "wo"}});
     py::array_t<float> out(shape(all_single({&wi, &wo}), n, 3));
     float* f = out.mutable_data();
-    FirstBad wi_bad, wo_bad;
     const BxDF& bxdf = m.bxdf();
-    parallel_rows(n, [&](std::size_t i) {
-        Vector3f a, b;
-        bool ok_i = unit_direction(row(wi, i, 3), &a), ok_o = unit_direction(row(wo, i, 3), &b);
-        if (!ok_i) wi_bad.note(i);
-        if (!ok_o) wo_bad.note(i);
-        // As the renderer's BSDF::f: nothing for wo in the surface's plane.
-        Color3 v = ok_i && ok_o && b.z != 0 ? bxdf.f(b, a, mode).rgb() : Color3(0.0f);
-        f[3 * i] = v.r;
-        f[3 * i + 1] = v.g;
-        f[3 * i + 2] = v.b;
-    });
-    if (wi_bad.any() || wo_bad.any()) throw_bad_direction(wi_bad, wo_bad);
+    over_direction_pairs(
+        wi, wo, n,
+        [&](std::size_t i, Vector3f w_o, Vector3f w_i) {
+            Color3 v = bxdf.f(w_o, w_i, mode).rgb();
+            f[3 * i] = v.r, f[3 * i + 1] = v.g, f[3 * i + 2] = v.b;
+        },
+        [&](std::size_t i) { f[3 * i] = f[3 * i + 1] = f[3 * i + 2] = 0; });
     return out;
 }
 
@@ -185,16 +198,10 @@ py::array_t<float> pdf(const Model& m, const py::handle& wi_in, const py::handle
     std::size_t n = common_rows({{&wi, "wi"}, {&wo, "wo"}});
     py::array_t<float> out(shape(all_single({&wi, &wo}), n, 0));
     float* p = out.mutable_data();
-    FirstBad wi_bad, wo_bad;
     const BxDF& bxdf = m.bxdf();
-    parallel_rows(n, [&](std::size_t i) {
-        Vector3f a, b;
-        bool ok_i = unit_direction(row(wi, i, 3), &a), ok_o = unit_direction(row(wo, i, 3), &b);
-        if (!ok_i) wi_bad.note(i);
-        if (!ok_o) wo_bad.note(i);
-        p[i] = ok_i && ok_o && b.z != 0 ? bxdf.pdf(b, a, mode).value : 0.0f;
-    });
-    if (wi_bad.any() || wo_bad.any()) throw_bad_direction(wi_bad, wo_bad);
+    over_direction_pairs(
+        wi, wo, n, [&](std::size_t i, Vector3f w_o, Vector3f w_i) { p[i] = bxdf.pdf(w_o, w_i, mode).value; },
+        [&](std::size_t i) { p[i] = 0; });
     return out;
 }
 
