@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <string>
 
+#include "illum/analysis/check_render.h"
 #include "illum/image/image.h"
 #include "illum/render/renderer.h"
 #include "illum/scene/build.h"
@@ -139,20 +140,13 @@ Material "diffuse" "rgb reflectance" [0 0 0]
 }
 
 // Mean of one channel over the pixels and its standard error, treating pixels as independent
-// estimates (they are: each has its own scrambled sample sequence).
+// estimates (they are: each has its own scrambled sample sequence): analysis's pixel_estimate.
 struct MeanEstimate {
     double mean = 0, standard_error = 0;
 };
 inline MeanEstimate pixel_mean(const Image& img, int channel) {
-    double sum = 0, sum2 = 0;
-    std::size_t n = img.pixel_count();
-    for (std::size_t i = 0; i < n; ++i) {
-        double v = img.data()[i][channel];
-        sum += v;
-        sum2 += v * v;
-    }
-    double mean = sum / n, var = std::max(0.0, (sum2 - n * mean * mean) / (n - 1));
-    return {mean, std::sqrt(var / n)};
+    Estimate e = pixel_estimate(img, channel);
+    return {e.mean, e.standard_error};
 }
 
 // Two renders A and B of independent seeds against a reference, one channel: d = (A - ref)² - (A - B)²/2

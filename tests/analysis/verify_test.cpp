@@ -76,11 +76,10 @@ TEST(Verify, BrokenLambertFailsTheClosedFurnace) {
     EXPECT_NEAR(broken.measured, 0.7 / (1 - kPiD * 0.25), 0.05 * broken.measured) << "Le/(1 - π ρ)";
 }
 
-// A point light whose photons carry half their power (a pdf_dir of 1/(2π), a hemisphere's, with photons
-// over the whole sphere), and one whose power() forgets the 4π.
-class HalfFluxPointLight final : public Light {
+// A point light that forwards everything to a real one, for the broken variants below to change one thing.
+class ForwardingPointLight : public Light {
 public:
-    explicit HalfFluxPointLight(Intensity3 i) : Light(LightType::DeltaPosition), real_({0, 0, 0}, i) {}
+    explicit ForwardingPointLight(Intensity3 i) : Light(LightType::DeltaPosition), real_({0, 0, 0}, i) {}
     std::optional<LightLiSample> sample_li(const LightSampleContext& c, Point2f u,
                                            const SampledWavelengths& l) const override {
         return real_.sample_li(c, u, l);
@@ -91,35 +90,33 @@ public:
     Power3 power() const override { return real_.power(); }
     std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
                                            const SampledWavelengths& l) const override {
-        auto s = real_.sample_le(u1, u2, l);
-        if (s) s->flux = s->flux * 0.5f;
-        return s;
-    }
-    void pdf_le(const Ray& r, Normal3f n, AreaPdf* pos, SolidAnglePdf* dir) const override {
-        real_.pdf_le(r, n, pos, dir);
-    }
-    PointLight real_;
-};
-
-class PowerWithout4PiPointLight final : public Light {
-public:
-    explicit PowerWithout4PiPointLight(Intensity3 i) : Light(LightType::DeltaPosition), real_({0, 0, 0}, i) {}
-    std::optional<LightLiSample> sample_li(const LightSampleContext& c, Point2f u,
-                                           const SampledWavelengths& l) const override {
-        return real_.sample_li(c, u, l);
-    }
-    SolidAnglePdf pdf_li(const LightSampleContext& c, Vector3f w, const SurfaceHit* h) const override {
-        return real_.pdf_li(c, w, h);
-    }
-    Power3 power() const override { return real_.power() * (1 / (4 * kPi)); }
-    std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
-                                           const SampledWavelengths& l) const override {
         return real_.sample_le(u1, u2, l);
     }
     void pdf_le(const Ray& r, Normal3f n, AreaPdf* pos, SolidAnglePdf* dir) const override {
         real_.pdf_le(r, n, pos, dir);
     }
+
+protected:
     PointLight real_;
+};
+
+// One whose photons carry half their power (a pdf_dir of 1/(2π), a hemisphere's, with photons over the
+// whole sphere), and one whose power() forgets the 4π.
+class HalfFluxPointLight final : public ForwardingPointLight {
+public:
+    using ForwardingPointLight::ForwardingPointLight;
+    std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
+                                           const SampledWavelengths& l) const override {
+        auto s = real_.sample_le(u1, u2, l);
+        if (s) s->flux = s->flux * 0.5f;
+        return s;
+    }
+};
+
+class PowerWithout4PiPointLight final : public ForwardingPointLight {
+public:
+    using ForwardingPointLight::ForwardingPointLight;
+    Power3 power() const override { return real_.power() * (1 / (4 * kPi)); }
 };
 
 TEST(Verify, BrokenLightPowerFails) {

@@ -21,7 +21,7 @@ struct FilmSettings {
 // "rgb" (and "gbuffer", "spectral", rendered as rgb with a warning): xresolution, yresolution, filename,
 // diagonal.
 FilmSettings create_film(const EntityDesc& film, Diagnostics& diag);
-// "box", "triangle", "gaussian" (xradius, yradius, sigma); "mitchell" and "sinc" as a gaussian, warned.
+// "box", "triangle", "gaussian" (xradius, yradius, sigma), "mitchell" (B, C) and "sinc" (tau).
 std::unique_ptr<Filter> create_filter(const EntityDesc& filter, Diagnostics& diag);
 // "perspective" (fov, lensradius, focaldistance, frameaspectratio, screenwindow), "orthographic" and
 // "realistic" (lensfile, aperturediameter, focusdistance, aperture; realistic_camera.h); "spherical" as a
