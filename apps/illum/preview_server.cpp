@@ -46,9 +46,10 @@ ServeAddress parse_serve_address(const std::string& text) {
     return a;
 }
 
-PreviewServer::PreviewServer(const ServeAddress& address, int width, int height)
+PreviewServer::PreviewServer(const ServeAddress& address, int width, int height, int total_spp)
     : address_(address), server_(std::make_unique<httplib::Server>()), start_(std::chrono::steady_clock::now()) {
     state_.image = Image(width, height);
+    state_.total_spp = total_spp;
     httplib::Server& s = *server_;
     s.Get("/", [](const httplib::Request&, httplib::Response& res) {
         res.set_content(kPreviewPage, "text/html; charset=utf-8");

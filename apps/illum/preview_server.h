@@ -30,8 +30,9 @@ ServeAddress parse_serve_address(const std::string& text);
 
 class PreviewServer final : public RenderPreview {
 public:
-    // Binds and starts serving; throws illum::Error when the address cannot be bound.
-    PreviewServer(const ServeAddress& address, int width, int height);
+    // Binds and starts serving; throws illum::Error when the address cannot be bound. total_spp: the samples
+    // per pixel the render will take (0 when a time budget decides), reported before the first pass lands.
+    PreviewServer(const ServeAddress& address, int width, int height, int total_spp);
     ~PreviewServer() override;
 
     // http://host:port/

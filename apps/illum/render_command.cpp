@@ -208,7 +208,8 @@ void run(const RenderArgs& args) {
     // The live preview: rank 0's, of its own share in a job of several ranks.
     std::unique_ptr<PreviewServer> server;
     if (p.serve && lead) {
-        server = std::make_unique<PreviewServer>(*p.serve, p.scene->width, p.scene->height);
+        const int total = p.options.time_budget > 0 ? 0 : sample_share(group).count(p.options.spp);
+        server = std::make_unique<PreviewServer>(*p.serve, p.scene->width, p.scene->height, total);
         fmt::print(stderr, "preview: {}\n", server->url());
         p.options.preview = server.get();
     }
