@@ -112,13 +112,14 @@ py::object render_scene(PyScene& self, const py::object& spp, const py::object& 
     RenderOptions options;
     options.spp =
         spp.is_none() ? request.spp : int(whole_number(spp, "spp", 1, INT_MAX, "a positive whole number"));
-    options.seed = seed_value(seed, "seed");
+    options.seed = seed.is_none() ? request.sampler_seed.value_or(0) : seed_value(seed, "seed");
     options.threads =
         threads.is_none() ? 0 : int(whole_number(threads, "threads", 1, 1 << 16, "a positive whole number"));
     if (time && !(*time > 0 && std::isfinite(*time)))
         throw py::value_error(fmt::format("time must be a positive number of seconds, not {}", *time));
     options.time_budget = time.value_or(0);
     options.sampler = sampler.value_or(request.sampler);
+    options.sampler_settings = request.sampler_settings;
     options.spectral = spectral;
     options.quiet = !progress;
     int depth = max_depth.is_none() ? request.max_depth
@@ -186,7 +187,7 @@ void bind_scene(py::module_& m) {
                                     s.request().integrator);
              })
         .def("render", &render_scene, py::kw_only(), py::arg("spp") = py::none(),
-             py::arg("resolution") = py::none(), py::arg("seed") = 0, py::arg("threads") = py::none(),
+             py::arg("resolution") = py::none(), py::arg("seed") = py::none(), py::arg("threads") = py::none(),
              py::arg("integrator") = py::none(), py::arg("max_depth") = py::none(),
              py::arg("sampler") = py::none(), py::arg("spectral") = false, py::arg("time") = py::none(),
              py::arg("progress") = false, py::arg("stats") = false,
@@ -195,10 +196,11 @@ shape (height, width, 3), which wraps the rendered image's own pixels (no copy).
 the same pixels as the command line (`--spp`, `--resolution WxH`, `--seed`, ...); the thread count never
 changes the image. None means the scene's own value.
 
-spp: samples per pixel; resolution: (width, height); seed: of the sample sequences (0 to 2^64-1);
-threads: worker threads (None: all cores); integrator: path, volpath, bdpt, direct, lightpath, sppm,
-albedo or normal; max_depth: -1 (unlimited) to 100000; sampler: sobol or independent; spectral: four
-sampled wavelengths per camera sample instead of RGB; time: render whole passes until this many seconds
+spp: samples per pixel; resolution: (width, height); seed: of the sample sequences (0 to 2^64-1; None:
+the scene's Sampler "seed", else 0); threads: worker threads (None: all cores); integrator: path,
+volpath, bdpt, direct, lightpath, sppm, albedo or normal; max_depth: -1 (unlimited) to 100000; sampler:
+zsobol, sobol, paddedsobol, halton, pmj02bn, stratified or independent; spectral: four sampled
+wavelengths per camera sample instead of RGB; time: render whole passes until this many seconds
 are spent; progress: print progress on stderr; stats: return (image, dict of the render's figures).
 The GIL is released while the scene renders.)");
 

@@ -32,6 +32,7 @@ struct RenderArgs {
     double time = 0;
     int threads = 0;
     std::uint64_t seed = 0;
+    bool seed_given = false; // --seed given: it wins over the scene's Sampler "seed"
     std::string integrator; // "": the scene's
     int max_depth = -2;     // -2: the scene's
     std::string sampler;
@@ -95,7 +96,7 @@ void write_stats(const std::string& path, const RenderArgs& args, const Scene& s
     j["ranks"] = times.ranks;
     j["setup_seconds"] = times.setup_seconds;
     j["communication_seconds"] = times.communication_seconds;
-    j["seed"] = args.seed;
+    j["seed"] = args.seed_given ? args.seed : scene.request.sampler_seed.value_or(0);
     j["nonfinite_samples"] = r.nonfinite_samples;
     j["mode"] = args.spectral ? "spectral" : "rgb";
     j["color_space"] = std::string(scene.color_space->name());
@@ -169,8 +170,9 @@ Prepared prepare(const RenderArgs& args, bool lead, bool quiet) {
     p.options.spp = args.spp > 0 ? args.spp : p.scene->request.spp;
     p.options.time_budget = args.time;
     p.options.threads = args.threads;
-    p.options.seed = args.seed;
+    p.options.seed = args.seed_given ? args.seed : p.scene->request.sampler_seed.value_or(0);
     p.options.sampler = args.sampler.empty() ? p.scene->request.sampler : args.sampler;
+    p.options.sampler_settings = p.scene->request.sampler_settings;
     p.options.quiet = quiet;
     p.options.spectral = args.spectral;
     p.write_options.exposure_stops = args.exposure;
@@ -263,13 +265,19 @@ void add_render_command(CLI::App& app) {
         ->check(positive_number());
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
         ->check(positive_integer());
-    cmd->add_option("--seed", args->seed, "Seed of the sample sequences");
+    cmd->add_option_function<std::uint64_t>(
+        "--seed",
+        [args](const std::uint64_t& v) {
+            args->seed = v;
+            args->seed_given = true;
+        },
+        "Seed of the sample sequences (default: the scene's Sampler \"seed\", else 0)");
     cmd->add_option("--integrator", args->integrator,
                     "path, volpath, bdpt, direct, albedo, normal, lightpath or sppm (default: the scene's)");
     cmd->add_option("--max-depth", args->max_depth,
                     "Maximum number of scattering events (default: the scene's)")
         ->check(CLI::Range(-1, 100000));
-    cmd->add_option("--sampler", args->sampler, "sobol or independent (default: the scene's)");
+    cmd->add_option("--sampler", args->sampler, "zsobol, sobol, paddedsobol, halton, pmj02bn, stratified or independent (default: the scene's)");
     cmd->add_option("--resolution", args->resolution, "Film resolution WIDTHxHEIGHT (default: the scene's)");
     cmd->add_option("--stats", args->stats, "Write render statistics as JSON to this file");
     cmd->add_option("--tonemap", args->tonemap, "Tone map for PNG output: clamp, reinhard or aces");

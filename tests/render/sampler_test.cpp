@@ -77,7 +77,8 @@ TEST(Sampler, Deterministic) {
     }
     EXPECT_EQ(parse_sampler_kind("sobol"), SamplerKind::sobol);
     EXPECT_EQ(parse_sampler_kind("independent"), SamplerKind::independent);
-    EXPECT_FALSE(parse_sampler_kind("halton").has_value());
+    EXPECT_EQ(parse_sampler_kind("halton"), SamplerKind::halton);
+    EXPECT_FALSE(parse_sampler_kind("sobel").has_value());
 }
 
 // Whether points form a (0, k, 2)-net in base 2: every elementary interval [i 2^-a, (i+1) 2^-a) x

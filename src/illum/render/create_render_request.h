@@ -12,9 +12,10 @@ namespace illum {
 // "direct" (pbrt-v3's "directlighting"), "albedo", "normal", "lightpath", "sppm" ("photonsperiteration"
 // (-1: the pixel count), "radius" (1), "seed" (6502)); "maxdepth" (5), "regularize" (false; true is
 // warned), "lightsampler" ("bvh" in pbrt-v4; illum samples lights by power, warned when another is named).
-// The other pbrt-v4 integrators render with "path", warned. Sampler: "pixelsamples" (16); zsobol, sobol
-// and paddedsobol are illum's Owen-scrambled Sobol, "independent" is independent, the others are replaced
-// by Sobol, warned.
+// The other pbrt-v4 integrators render with "path", warned. Sampler: every pbrt-v4 sampler but "sobol"
+// as pbrt-v4 defines it (sampler.h), "sobol" is illum's padded Owen-scrambled Sobol; "pixelsamples" (16),
+// "seed" (the CLI's --seed wins when given), "randomization" (zsobol, paddedsobol: "fastowen"; halton:
+// "permutedigits"), stratified's "xsamples", "ysamples" (4, 4; spp is their product) and "jitter" (true).
 RenderRequest create_render_request(const EntityDesc& integrator, const EntityDesc& sampler,
                                     Diagnostics& diag);
 

@@ -237,7 +237,7 @@ RenderResult LightPathIntegrator::render_image(const RenderOptions& options) con
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
     tbb::task_arena arena(threads);
 
-    Sampler prototype(render_sampler_kind(options), options.spp > 0 ? options.spp : 1, options.seed);
+    const Sampler prototype = make_sampler(options, options.spp > 0 ? options.spp : 1, {w, h});
     tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });
     SplatFilm film(w, h, *scene_.filter);
     const bool spectral = options.spectral;

@@ -36,11 +36,20 @@ int render_threads(const RenderOptions& options) {
 
 SamplerKind render_sampler_kind(const RenderOptions& options) {
     std::optional<SamplerKind> kind = parse_sampler_kind(options.sampler);
-    if (!kind) throw Error("unknown sampler \"" + options.sampler + "\" (use sobol or independent)");
+    if (!kind)
+        throw Error("unknown sampler \"" + options.sampler +
+                    "\" (use zsobol, sobol, paddedsobol, halton, pmj02bn, stratified or independent)");
     return *kind;
 }
 
-int sum_over_group(const RenderOptions& options, int passes, std::span<double> accumulators, RenderResult& r) {
+Sampler make_sampler(const RenderOptions& options, int spp, Point2i resolution) {
+    SamplerSettings settings = options.sampler_settings;
+    settings.resolution = resolution;
+    return Sampler(render_sampler_kind(options), spp, options.seed, settings);
+}
+
+int sum_over_group(const RenderOptions& options, int passes, std::span<double> accumulators,
+                   RenderResult& r) {
     RenderGroup* group = options.group;
     if (!group) return passes;
     group->sum(accumulators, false);
@@ -60,7 +69,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
 
     Film film(w, h);
     std::vector<Tile> tiles = make_tiles(w, h, options.tile_size);
-    Sampler prototype(render_sampler_kind(options), options.spp > 0 ? options.spp : 1, options.seed);
+    const Sampler prototype = make_sampler(options, options.spp > 0 ? options.spp : 1, {w, h});
     tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });
     std::atomic<std::uint64_t> nonfinite{0};
     const bool reject_negative = !integrator.signed_values();

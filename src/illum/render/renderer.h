@@ -23,6 +23,7 @@ struct RenderOptions {
     int threads = 0;        // 0: all hardware threads
     std::uint64_t seed = 0;
     std::string sampler = "sobol";
+    SamplerSettings sampler_settings; // the scene's Sampler parameters; the resolution is the scene's
     bool quiet = false;
     int tile_size = 16;
     // Spectral mode: four sampled wavelengths per camera sample instead of RGB.
@@ -65,6 +66,9 @@ public:
 // the sampler kind (an unknown name throws illum::Error naming the choices).
 int render_threads(const RenderOptions& options);
 SamplerKind render_sampler_kind(const RenderOptions& options);
+// The sampler every thread copies: options' kind, settings and seed, spp samples per pixel over the
+// scene's resolution.
+Sampler make_sampler(const RenderOptions& options, int spp, Point2i resolution);
 
 // Runs a render loop's passes: pass(k0, k1) renders this process's samples k0..k1-1 (of its share,
 // render_group.h). Either all of the share's samples of options.spp at once, or, with a time budget,

@@ -10,13 +10,47 @@ std::string_view sampler_kind_name(SamplerKind kind) {
         return "independent";
     case SamplerKind::sobol:
         return "sobol";
+    case SamplerKind::zsobol:
+        return "zsobol";
+    case SamplerKind::paddedsobol:
+        return "paddedsobol";
+    case SamplerKind::halton:
+        return "halton";
+    case SamplerKind::pmj02bn:
+        return "pmj02bn";
+    case SamplerKind::stratified:
+        return "stratified";
     }
     return "unknown";
 }
 
 std::optional<SamplerKind> parse_sampler_kind(std::string_view name) {
     if (name == "independent" || name == "random") return SamplerKind::independent;
-    if (name == "sobol" || name == "zsobol" || name == "owen-sobol") return SamplerKind::sobol;
+    if (name == "sobol" || name == "owen-sobol") return SamplerKind::sobol;
+    for (SamplerKind k : {SamplerKind::zsobol, SamplerKind::paddedsobol, SamplerKind::halton,
+                          SamplerKind::pmj02bn, SamplerKind::stratified})
+        if (name == sampler_kind_name(k)) return k;
+    return std::nullopt;
+}
+
+std::string_view randomization_name(Randomization r) {
+    switch (r) {
+    case Randomization::none:
+        return "none";
+    case Randomization::permute_digits:
+        return "permutedigits";
+    case Randomization::fast_owen:
+        return "fastowen";
+    case Randomization::owen:
+        return "owen";
+    }
+    return "unknown";
+}
+
+std::optional<Randomization> parse_randomization(std::string_view name) {
+    for (Randomization r :
+         {Randomization::none, Randomization::permute_digits, Randomization::fast_owen, Randomization::owen})
+        if (name == randomization_name(r)) return r;
     return std::nullopt;
 }
 

@@ -6,7 +6,7 @@
 // (the film-plane offset), wherever it is called; each get_1d() / get_2d() call then takes the next
 // dimension (1, 2, ...), one per call whether 1D or 2D.
 //
-// Kinds:
+// Kinds (pbrt-v4's samplers, docs/scenes.md says where they differ):
 //  - independent: a PCG32 stream seeded by hash(seed, pixel, sample index).
 //  - sobol: padded, Owen-scrambled Sobol after B. Burley, "Practical Hash-based Owen Scrambling", JCGT 9(4)
 //    2020. Every dimension (1D) or dimension pair (2D) uses the first one or two Sobol dimensions with the
@@ -14,11 +14,30 @@
 //    each output coordinate Owen-scrambled with its own hashed seed. The index shuffle maps the first 2^k
 //    indices onto one aligned block of 2^k Sobol points, so for every k the first 2^k samples of a pixel
 //    are stratified (a (0, k, 2)-net in 2D), and dimensions are decorrelated from each other.
+//  - zsobol: pbrt-v4's ZSobolSampler (A. Ahmed, P. Wonka, "Screen-Space Blue-Noise Diffusion of Monte
+//    Carlo Sampling Error via Hierarchical Ordering of Pixels", SIGGRAPH Asia 2020): one Sobol (0,2)
+//    sequence over the whole image, pixel p taking the indices (Morton(p) << log2 spp) + i, with the
+//    base-4 digits of that index permuted by a hash of the digits above and of the dimension, and the
+//    values scrambled per dimension ("randomization"). Neighbouring pixels share strata of one sequence,
+//    so the error is blue noise in screen space.
+//  - paddedsobol: pbrt-v4's PaddedSobolSampler: per (pixel, dimension) a hashed permutation of [0, spp)
+//    picks the index into the first one or two Sobol dimensions, values scrambled ("randomization").
+//  - halton: pbrt-v4's HaltonSampler: radical inverses in the d-th prime base of one global index; the
+//    pixel is found from the first two dimensions (bases 2 and 3, scaled by 2^j, 3^k >= the resolution up
+//    to 128) through the Chinese remainder theorem; digits permuted or Owen-scrambled.
+//  - pmj02bn: pbrt-v4's PMJ02BNSampler: progressive multi-jittered (0,2) sequences (pmj02.h) for the
+//    pixel offset (a 2^k x 2^k tile of pixels shares one sequence) and the 2D dimensions, Cranley-Patterson
+//    rotated per pixel by a blue-noise tile; 1D dimensions are stratified with blue-noise jitter.
+//  - stratified: pbrt-v4's StratifiedSampler: x_samples x y_samples strata in 2D (spp in 1D), the
+//    stratum of sample i a hashed permutation per (pixel, dimension), jittered within or centred.
+// The low-discrepancy kinds take indices beyond spp (time-budget renders) as further rounds of spp,
+// each round randomised by its own hash.
 //
 // Nothing is allocated per sample; a Sampler is a small value to copy into each thread.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string_view>
 
@@ -27,11 +46,33 @@
 
 namespace illum {
 
-enum class SamplerKind : uint8_t { independent, sobol };
+enum class SamplerKind : uint8_t { independent, sobol, zsobol, paddedsobol, halton, pmj02bn, stratified };
 
 std::string_view sampler_kind_name(SamplerKind kind);
-// "independent" / "random" or "sobol" / "zsobol" / "owen-sobol"; nullopt otherwise.
+// "independent" / "random", "sobol" / "owen-sobol", "zsobol", "paddedsobol", "halton", "pmj02bn" or
+// "stratified"; nullopt otherwise.
 std::optional<SamplerKind> parse_sampler_kind(std::string_view name);
+
+// pbrt-v4's "randomization" of the Sobol and Halton samplers: none, a random digit permutation per digit
+// position ("permutedigits"; in base 2 an XOR, a random digital shift), Burley's hashed approximation of
+// Owen scrambling ("fastowen") or the exact nested scramble ("owen").
+enum class Randomization : uint8_t { none, permute_digits, fast_owen, owen };
+std::string_view randomization_name(Randomization r);
+std::optional<Randomization> parse_randomization(std::string_view name);
+
+// What a scene's Sampler directive sets besides the kind, the sample count and the seed.
+struct SamplerSettings {
+    // nullopt: the kind's default (halton: permute_digits; zsobol, paddedsobol: fast_owen).
+    std::optional<Randomization> randomization;
+    bool jitter = true;               // stratified: jitter within the stratum (else its centre)
+    int x_samples = 0, y_samples = 0; // stratified: strata; used when their product is spp, else spp is
+                                      // factored as pbrt-v4 does for --spp (y the largest divisor <= sqrt)
+    Point2i resolution{0, 0};         // the film's; zsobol's Morton digits, halton's pixel scales
+                                      // (0: 128 x 128)
+};
+
+// The tables a sampler shares between its copies (halton's digit permutations, pmj02bn's pixel samples).
+struct SamplerTables;
 
 namespace sampling_detail {
 
@@ -73,8 +114,8 @@ inline float bits_to_unit_float(uint32_t x) { return float(x >> 8) * 0x1p-24f; }
 
 class Sampler {
 public:
-    Sampler(SamplerKind kind, int samples_per_pixel, uint64_t seed = 0)
-        : kind_(kind), spp_(samples_per_pixel), seed_(seed) {}
+    // Throws illum::Error for settings the kind cannot take (pmj02bn beyond 65536 spp).
+    Sampler(SamplerKind kind, int samples_per_pixel, uint64_t seed = 0, const SamplerSettings& settings = {});
 
     SamplerKind kind() const { return kind_; }
     int samples_per_pixel() const { return spp_; }
@@ -88,14 +129,17 @@ public:
             rng_.set_sequence(h, mix_bits(h));
             pixel_rng_ = rng_;
             rng_.advance(2); // the first two numbers belong to get_pixel_2d()
-        } else {
+        } else if (kind_ == SamplerKind::sobol) {
             pixel_hash_ = hash(seed_, pixel.x, pixel.y);
+        } else {
+            start_other(pixel);
         }
     }
 
     float get_1d() {
         if (kind_ == SamplerKind::independent) return rng_.uniform_float();
-        return sobol_1d(dimension_++);
+        if (kind_ == SamplerKind::sobol) return sobol_1d(dimension_++);
+        return other_1d();
     }
 
     Point2f get_2d() {
@@ -103,7 +147,8 @@ public:
             float x = rng_.uniform_float();
             return {x, rng_.uniform_float()};
         }
-        return sobol_2d(dimension_++);
+        if (kind_ == SamplerKind::sobol) return sobol_2d(dimension_++);
+        return other_2d();
     }
 
     Point2f get_pixel_2d() {
@@ -112,7 +157,8 @@ public:
             float x = r.uniform_float();
             return {x, r.uniform_float()};
         }
-        return sobol_2d(0);
+        if (kind_ == SamplerKind::sobol) return sobol_2d(0);
+        return other_pixel_2d();
     }
 
 private:
@@ -140,12 +186,44 @@ private:
         return {bits_to_unit_float(x), bits_to_unit_float(y)};
     }
 
+    // The kinds after sobol (sampler.cpp). Their dimensions: the pixel offset is dimension pair (0, 1)
+    // wherever it is asked for; get_1d() then takes dimension 2, 3, ... one each, get_2d() two each.
+    void start_other(Point2i pixel);
+    float other_1d();
+    Point2f other_2d();
+    Point2f other_pixel_2d();
+    float zsobol_1d(uint32_t dim) const;
+    Point2f zsobol_2d(uint32_t dim) const;
+    float padded_1d(uint32_t dim) const;
+    Point2f padded_2d(uint32_t dim) const;
+    float halton_dimension(uint32_t dim) const;
+    float stratified_1d(uint32_t dim) const;
+    Point2f stratified_2d(uint32_t dim) const;
+    float pmj02bn_1d(uint32_t dim) const;
+    Point2f pmj02bn_2d(uint32_t dim) const;
+    float blue_noise(uint32_t dim) const;
+    uint64_t zsobol_index(uint32_t dim) const;
+
     SamplerKind kind_;
     int spp_;
     uint64_t seed_;
     uint32_t index_ = 0, dimension_ = 1;
     uint64_t pixel_hash_ = 0;
     PCG32 rng_, pixel_rng_;
+
+    // The other kinds' state.
+    Randomization randomization_ = Randomization::fast_owen;
+    Point2i pixel_{0, 0};
+    uint32_t round_ = 0,
+             round_index_ = 0; // index_ = round_ * spp + round_index_ (zsobol: spp rounded up to 2^k)
+    uint64_t morton_index_ = 0, halton_index_ = 0;
+    int log2_spp_ = 0, base4_digits_ = 0; // zsobol
+    int halton_scale_[2] = {1, 1}, halton_exponent_[2] = {0, 0};
+    int64_t halton_inverse_[2] = {0, 0};
+    int x_samples_ = 1, y_samples_ = 1; // stratified
+    bool jitter_ = true;
+    int pmj_tile_ = 1; // pmj02bn: pixels per side sharing one sequence
+    std::shared_ptr<const SamplerTables> tables_;
 };
 
 } // namespace illum

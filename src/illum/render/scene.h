@@ -4,6 +4,7 @@
 
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "illum/light/light.h"
 #include "illum/light/light_sampler.h"
 #include "illum/medium/medium.h"
+#include "illum/render/sampler.h"
 #include "illum/texture/texture.h"
 
 namespace illum {
@@ -25,7 +27,9 @@ struct RenderRequest {
     int max_depth = 5;
     std::string sampler = "sobol";
     int spp = 16;
-    std::string output; // the film's filename, "" when none
+    SamplerSettings sampler_settings;     // the Sampler directive's parameters (sampler.h)
+    std::optional<uint64_t> sampler_seed; // its "seed", if given
+    std::string output;                   // the film's filename, "" when none
     // Integrator "sppm" (pbrt-v4's parameters): photons per iteration (-1: the pixel count), the initial
     // search radius [world units] and the photon streams' seed.
     long long sppm_photons_per_iteration = -1;

@@ -454,9 +454,8 @@ RenderResult SppmRender::run(SppmStats* stats) {
     chunk_phi_.assign(std::size_t(chunks_) * pixels_, Color3());
     chunk_m_.assign(std::size_t(chunks_) * pixels_, 0u);
 
-    const SamplerKind kind = render_sampler_kind(options_);
     const int iterations_asked = options_.spp > 0 ? options_.spp : 1;
-    Sampler camera_prototype(kind, iterations_asked, options_.seed);
+    const Sampler camera_prototype = make_sampler(options_, iterations_asked, {scene_.width, scene_.height});
     Sampler photon_prototype(SamplerKind::sobol, 1, hash(options_.seed, settings_.seed));
     camera_threads_ = std::make_unique<tbb::enumerable_thread_specific<CameraThread>>(
         [&] { return CameraThread(camera_prototype); });
