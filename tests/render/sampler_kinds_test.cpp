@@ -113,6 +113,19 @@ std::vector<float> draw(Sampler s, Point2i pixel, int index, bool pixel_last = f
     return v;
 }
 
+// 20 (2D, 1D) pairs then the pixel offset, from a fresh copy.
+std::vector<float> draw_long(Sampler s, Point2i pixel, int index) {
+    s.start_pixel_sample(pixel, index);
+    std::vector<float> v;
+    for (int d = 0; d < 20; ++d) {
+        Point2f q = s.get_2d();
+        v.insert(v.end(), {s.get_1d(), q.x, q.y});
+    }
+    Point2f p = s.get_pixel_2d();
+    v.insert(v.begin(), {p.x, p.y});
+    return v;
+}
+
 int count_equal(const std::vector<float>& a, const std::vector<float>& b) {
     int n = 0;
     for (size_t i = 0; i < a.size(); ++i) n += a[i] == b[i];
@@ -143,6 +156,32 @@ TEST(SamplerKinds, DeterministicAndDistinct) {
         }
         EXPECT_NE(ref, draw(a, {5, 7}, 5));
         EXPECT_NE(ref, draw(a, {4, 7}, 6));
+    }
+}
+
+// One sampler drawing many samples in the render loop's order (a pixel's samples one after another, which
+// zsobol's per-pixel cache serves) and in a shuffled order gives each (pixel, index) the numbers a fresh
+// sampler gives it.
+TEST(SamplerKinds, SameNumbersInAnyOrder) {
+    for (auto& [kind, settings] : all_configurations()) {
+        SCOPED_TRACE(describe(kind, settings));
+        const Sampler proto(kind, 8, 11, settings);
+        Sampler running = proto;
+        std::vector<std::pair<Point2i, int>> order;
+        for (int p = 0; p < 6; ++p)
+            for (int i = 0; i < 8; ++i) order.push_back({{p % 3, p / 3}, i});
+        for (int k = 0; k < 48; ++k) order.push_back({{(k * 5) % 3, (k * 7) % 2}, (k * 3) % 8}); // shuffled
+        for (auto [pixel, i] : order) {
+            running.start_pixel_sample(pixel, i);
+            std::vector<float> got;
+            for (int d = 0; d < 20; ++d) { // beyond zsobol's 32 cached dimensions too
+                Point2f q = running.get_2d();
+                got.insert(got.end(), {running.get_1d(), q.x, q.y});
+            }
+            Point2f px = running.get_pixel_2d();
+            got.insert(got.begin(), {px.x, px.y});
+            ASSERT_EQ(got, draw_long(proto, pixel, i)) << pixel.x << "," << pixel.y << " " << i;
+        }
     }
 }
 

@@ -110,11 +110,15 @@ std::vector<DigitPermutations> make_digit_permutations(uint64_t seed) {
         d.base = int(kPrimes[size_t(k)]);
         d.n_digits = float_digits(kPrimes[size_t(k)]);
         d.perm.resize(size_t(d.n_digits) * size_t(d.base));
+        // Fisher-Yates with a PCG32 stream per (seed, base, digit).
         for (int i = 0; i < d.n_digits; ++i) {
-            const uint32_t s = uint32_t(hash(seed, d.base, i));
-            for (int j = 0; j < d.base; ++j)
-                d.perm[size_t(i) * size_t(d.base) + size_t(j)] =
-                    uint16_t(permutation_element(uint32_t(j), uint32_t(d.base), s));
+            uint16_t* perm = d.perm.data() + size_t(i) * size_t(d.base);
+            for (int j = 0; j < d.base; ++j) perm[j] = uint16_t(j);
+            PCG32 rng(hash(seed, d.base, i));
+            for (int j = d.base - 1; j > 0; --j) {
+                const int k = int(rng.uniform_uint32() % uint32_t(j + 1)); // bias < 2^-19 for b < 7920
+                std::swap(perm[j], perm[k]);
+            }
         }
     }
     return out;

@@ -233,8 +233,9 @@ std::vector<float> blue_noise_tile(uint64_t seed) {
         int p = int(rng.uniform_uint32() % uint32_t(N));
         if (!on[size_t(p)]) toggle(on, energy, p, true), ++placed;
     }
-    // Relax the initial pattern: move the tightest cluster into the largest void until that is a no-op.
-    for (int iter = 0; iter < 4 * N; ++iter) {
+    // Relax the initial pattern: move the tightest cluster into the largest void until that is a no-op (or,
+    // should two pixels trade places forever, for at most as many moves as there are pixels on).
+    for (int iter = 0; iter < initial; ++iter) {
         int c = extreme(on, energy, true);
         toggle(on, energy, c, false);
         int v = extreme(on, energy, false);

@@ -192,8 +192,8 @@ private:
     float other_1d();
     Point2f other_2d();
     Point2f other_pixel_2d();
-    float zsobol_1d(uint32_t dim) const;
-    Point2f zsobol_2d(uint32_t dim) const;
+    float zsobol_1d(uint32_t dim);
+    Point2f zsobol_2d(uint32_t dim);
     float padded_1d(uint32_t dim) const;
     Point2f padded_2d(uint32_t dim) const;
     float halton_dimension(uint32_t dim) const;
@@ -202,7 +202,7 @@ private:
     float pmj02bn_1d(uint32_t dim) const;
     Point2f pmj02bn_2d(uint32_t dim) const;
     float blue_noise(uint32_t dim) const;
-    uint64_t zsobol_index(uint32_t dim) const;
+    uint64_t zsobol_index(uint32_t dim);
 
     SamplerKind kind_;
     int spp_;
@@ -218,6 +218,12 @@ private:
              round_index_ = 0; // index_ = round_ * spp + round_index_ (zsobol: spp rounded up to 2^k)
     uint64_t morton_index_ = 0, halton_index_ = 0;
     int log2_spp_ = 0, base4_digits_ = 0; // zsobol
+    // zsobol: the permuted pixel digits of the current pixel's first dimensions (bit d of zsobol_cached_:
+    // dimension d's are there).
+    static constexpr uint32_t kZSobolCachedDimensions = 32;
+    uint64_t zsobol_cached_ = 0;
+    bool zsobol_cache_valid_ = false;
+    uint64_t zsobol_pixel_digits_[kZSobolCachedDimensions] = {};
     int halton_scale_[2] = {1, 1}, halton_exponent_[2] = {0, 0};
     int64_t halton_inverse_[2] = {0, 0};
     int x_samples_ = 1, y_samples_ = 1; // stratified

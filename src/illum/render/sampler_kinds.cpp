@@ -52,21 +52,24 @@ float fixed_to_float(uint32_t x) { return bits_to_unit_float(x); }
 // toroidal and value offset of its own.
 constexpr int kBlueNoiseTiles = 8;
 
-// The five pmj02 sequences and the blue-noise tiles, generated once per process on first use (fixed seeds,
-// as pbrt-v4's tables are fixed; docs/performance.md has the time this takes).
+// Fixed seeds, as pbrt-v4's tables are fixed.
+uint64_t pmj_seed(int set) { return hash(0x706d6a3032ULL, set); }
+
+// The pixel offsets' pmj02 sequence (2^16 points) and the blue-noise tiles, generated once per process on
+// first use (docs/performance.md has the time this takes).
 struct Pmj02Data {
-    std::array<std::vector<pmj02::FixedPoint2>, kPmjSets> sets;
+    std::vector<pmj02::FixedPoint2> pixel_sequence;
     std::array<std::vector<float>, kBlueNoiseTiles> blue_noise;
 };
 
 const Pmj02Data& pmj02_data() {
     static const Pmj02Data data = [] {
         Pmj02Data d;
-        tbb::parallel_for(0, kPmjSets + kBlueNoiseTiles, [&](int k) {
-            if (k < kPmjSets)
-                d.sets[size_t(k)] = pmj02::generate(kPmjPoints, hash(0x706d6a3032ULL, k));
+        tbb::parallel_for(0, 1 + kBlueNoiseTiles, [&](int k) {
+            if (k == 0)
+                d.pixel_sequence = pmj02::generate(kPmjPoints, pmj_seed(0));
             else
-                d.blue_noise[size_t(k - kPmjSets)] = pmj02::blue_noise_tile(hash(0xb1e5eedULL, k));
+                d.blue_noise[size_t(k - 1)] = pmj02::blue_noise_tile(hash(0xb1e5eedULL, k));
         });
         return d;
     }();
@@ -78,6 +81,9 @@ const Pmj02Data& pmj02_data() {
 struct SamplerTables {
     std::vector<DigitPermutations> digit_permutations; // halton with permutedigits
     const Pmj02Data* pmj = nullptr;
+    // pmj02bn's sequences 1..4 for the 2D dimensions: only their first spp points (rounded up to a power
+    // of two) are ever used, and a pmj02 sequence's prefix does not depend on its length.
+    std::array<std::vector<pmj02::FixedPoint2>, kPmjSets - 1> sets;
     std::vector<Point2f> pmj_pixel_samples; // pmj02bn: pixel (x, y) of the tile, sample i at
                                             // ((y tile + x) spp + i)
 };
@@ -142,7 +148,9 @@ Sampler::Sampler(SamplerKind kind, int samples_per_pixel, uint64_t seed, const S
         pmj_tile_ = 1 << log2_tile;
         std::vector<int> stored(size_t(pmj_tile_) * size_t(pmj_tile_), 0);
         t->pmj_pixel_samples.resize(stored.size() * size_t(spp_));
-        for (const pmj02::FixedPoint2& p : t->pmj->sets[0]) {
+        for (int k = 1; k < kPmjSets; ++k)
+            t->sets[size_t(k - 1)] = pmj02::generate(1 << ceil_log2(spp_), pmj_seed(k));
+        for (const pmj02::FixedPoint2& p : t->pmj->pixel_sequence) {
             const uint32_t px = log2_tile ? p.x >> (32 - log2_tile) : 0u;
             const uint32_t py = log2_tile ? p.y >> (32 - log2_tile) : 0u;
             const size_t pixel = size_t(py) * size_t(pmj_tile_) + px;
@@ -161,8 +169,13 @@ void Sampler::start_other(Point2i pixel) {
     dimension_ = 2;
     if (kind_ == SamplerKind::zsobol) {
         const uint32_t per_pixel = 1u << log2_spp_;
-        round_ = index_ >> log2_spp_, round_index_ = index_ & (per_pixel - 1);
-        morton_index_ = (morton_2d(uint32_t(pixel.x), uint32_t(pixel.y)) << log2_spp_) | round_index_;
+        const uint32_t round = index_ >> log2_spp_;
+        const uint64_t morton = morton_2d(uint32_t(pixel.x), uint32_t(pixel.y));
+        if (morton != morton_index_ >> log2_spp_ || round != round_ || !zsobol_cache_valid_)
+            zsobol_cached_ = 0;
+        zsobol_cache_valid_ = true;
+        round_ = round, round_index_ = index_ & (per_pixel - 1);
+        morton_index_ = (morton << log2_spp_) | round_index_;
         return;
     }
     if (kind_ == SamplerKind::halton) {
@@ -257,30 +270,47 @@ Point2f Sampler::other_pixel_2d() {
 // by a hash of the digits above it and the dimension; an odd log2 spp leaves a lowest single bit, flipped
 // by a hashed bit. Pixels sharing the digits above share a permutation, so a block of 4^k pixels takes
 // the 4^k spp consecutive indices of one Sobol block: stratified over the block.
-uint64_t Sampler::zsobol_index(uint32_t dim) const {
+//
+// The digits above the pixel's sample bits depend only on (pixel, dimension, round): they are computed once
+// per pixel for the first kZSobolCachedDimensions dimensions and kept while the render loop takes the
+// pixel's other samples (a pure function cached, so the values are the same in any order).
+uint64_t Sampler::zsobol_index(uint32_t dim) {
     const uint64_t key = mix_bits(seed_ ^ (uint64_t(dim) * kGolden) ^ (uint64_t(round_) << 40));
     const bool odd = log2_spp_ & 1;
-    uint64_t index = 0;
-    for (int i = base4_digits_ - 1; i >= (odd ? 1 : 0); --i) {
+    // Digit i covers bits [2i - odd, 2i - odd + 1]; digits from first_pixel_digit up hold pixel bits only.
+    const int first_pixel_digit = (log2_spp_ + 1) / 2;
+    auto permuted_digit = [&](int i) {
         const int shift = 2 * i - (odd ? 1 : 0);
         const uint64_t digit = (morton_index_ >> shift) & 3u;
         const uint64_t above = shift + 2 >= 64 ? 0 : morton_index_ >> (shift + 2);
         const uint32_t p = uint32_t(mix_bits(above ^ key) >> 32) % 24u;
-        index |= uint64_t(kBase4Permutations[p][digit]) << shift;
+        return uint64_t(kBase4Permutations[p][digit]) << shift;
+    };
+    uint64_t index = 0;
+    if (dim < kZSobolCachedDimensions && (zsobol_cached_ >> dim) & 1u) {
+        index = zsobol_pixel_digits_[dim];
+    } else {
+        for (int i = base4_digits_ - 1; i >= first_pixel_digit; --i) index |= permuted_digit(i);
+        if (dim < kZSobolCachedDimensions) {
+            zsobol_pixel_digits_[dim] = index;
+            zsobol_cached_ |= uint64_t(1) << dim;
+        }
     }
+    for (int i = std::min(first_pixel_digit, base4_digits_) - 1; i >= (odd ? 1 : 0); --i)
+        index |= permuted_digit(i);
     if (odd) index |= (morton_index_ & 1u) ^ (mix_bits((morton_index_ >> 1) ^ key) & 1u);
     return index;
 }
 
-float Sampler::zsobol_1d(uint32_t dim) const {
-    const uint64_t h = hash(seed_, dim, round_);
-    return bits_to_unit_float(
-        scramble_base2(sobol_dim0(uint32_t(zsobol_index(dim))), uint32_t(h), randomization_));
+float Sampler::zsobol_1d(uint32_t dim) {
+    const uint32_t i = uint32_t(zsobol_index(dim));
+    const uint64_t h = mix_bits(seed_ + (uint64_t(dim) + 1) * kGolden + (uint64_t(round_) << 32));
+    return bits_to_unit_float(scramble_base2(sobol_dim0(i), uint32_t(h), randomization_));
 }
 
-Point2f Sampler::zsobol_2d(uint32_t dim) const {
-    const uint64_t h = hash(seed_, dim, round_);
+Point2f Sampler::zsobol_2d(uint32_t dim) {
     const uint32_t i = uint32_t(zsobol_index(dim)); // bits above 32 do not reach a 32-bit fraction
+    const uint64_t h = mix_bits(seed_ + (uint64_t(dim) + 1) * kGolden + (uint64_t(round_) << 32));
     return {bits_to_unit_float(scramble_base2(sobol_dim0(i), uint32_t(h), randomization_)),
             bits_to_unit_float(scramble_base2(sobol_dim1(i), uint32_t(h >> 32), randomization_))};
 }
@@ -355,7 +385,8 @@ Point2f Sampler::pmj02bn_2d(uint32_t dim) const {
     if (instance >= uint32_t(kPmjSets) || round_ > 0)
         i = permutation_element(i, uint32_t(spp_),
                                 uint32_t(mix_bits(pixel_hash_ + (uint64_t(dim) + 1) * kGolden)));
-    const pmj02::FixedPoint2 p = tables_->pmj->sets[instance % kPmjSets][i];
+    const uint32_t set = instance % kPmjSets;
+    const pmj02::FixedPoint2 p = set == 0 ? tables_->pmj->pixel_sequence[i] : tables_->sets[set - 1][i];
     float x = fixed_to_float(p.x) + blue_noise(dim), y = fixed_to_float(p.y) + blue_noise(dim + 1);
     if (x >= 1) x -= 1;
     if (y >= 1) y -= 1;
