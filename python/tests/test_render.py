@@ -7,7 +7,7 @@ import illum
 
 
 def render_cli(cli, tmp_path, *args):
-    out = tmp_path / "cli.exr"
+    out = tmp_path / "cli.pfm"  # float, exact (an EXR is half by default, as pbrt-v4 writes its film)
     r = cli("render", *args, "--quiet", "-o", out)
     assert r.returncode == 0, r.stderr
     return illum.read_image(out)
