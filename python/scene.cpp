@@ -112,7 +112,7 @@ py::object render_scene(PyScene& self, const py::object& spp, const py::object& 
     RenderOptions options;
     options.spp =
         spp.is_none() ? request.spp : int(whole_number(spp, "spp", 1, INT_MAX, "a positive whole number"));
-    options.seed = seed_value(seed, "seed");
+    options.seed = seed.is_none() ? request.seed.value_or(0) : seed_value(seed, "seed");
     options.threads =
         threads.is_none() ? 0 : int(whole_number(threads, "threads", 1, 1 << 16, "a positive whole number"));
     if (time && !(*time > 0 && std::isfinite(*time)))
@@ -186,16 +186,16 @@ void bind_scene(py::module_& m) {
                                     s.request().integrator);
              })
         .def("render", &render_scene, py::kw_only(), py::arg("spp") = py::none(),
-             py::arg("resolution") = py::none(), py::arg("seed") = 0, py::arg("threads") = py::none(),
-             py::arg("integrator") = py::none(), py::arg("max_depth") = py::none(),
-             py::arg("sampler") = py::none(), py::arg("spectral") = false, py::arg("time") = py::none(),
-             py::arg("progress") = false, py::arg("stats") = false,
+             py::arg("resolution") = py::none(), py::arg("seed") = py::none(),
+             py::arg("threads") = py::none(), py::arg("integrator") = py::none(),
+             py::arg("max_depth") = py::none(), py::arg("sampler") = py::none(), py::arg("spectral") = false,
+             py::arg("time") = py::none(), py::arg("progress") = false, py::arg("stats") = false,
              R"(Renders the scene as `illum render` does and returns the linear radiance as a float32 array of
 shape (height, width, 3), which wraps the rendered image's own pixels (no copy). The same arguments give
 the same pixels as the command line (`--spp`, `--resolution WxH`, `--seed`, ...); the thread count never
 changes the image. None means the scene's own value.
 
-spp: samples per pixel; resolution: (width, height); seed: of the sample sequences (0 to 2^64-1);
+spp: samples per pixel; resolution: (width, height); seed: of the sample sequences (0 to 2^64-1; None: the scene's Option "seed", else 0);
 threads: worker threads (None: all cores); integrator: path, volpath, bdpt, direct, lightpath, sppm,
 albedo or normal; max_depth: -1 (unlimited) to 100000; sampler: sobol or independent; spectral: four
 sampled wavelengths per camera sample instead of RGB; time: render whole passes until this many seconds
