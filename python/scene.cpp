@@ -112,7 +112,7 @@ py::object render_scene(PyScene& self, const py::object& spp, const py::object& 
     RenderOptions options;
     options.spp =
         spp.is_none() ? request.spp : int(whole_number(spp, "spp", 1, INT_MAX, "a positive whole number"));
-    options.seed = seed.is_none() ? request.sampler_seed.value_or(0) : seed_value(seed, "seed");
+    options.seed = seed.is_none() ? request.scene_seed() : seed_value(seed, "seed");
     options.threads =
         threads.is_none() ? 0 : int(whole_number(threads, "threads", 1, 1 << 16, "a positive whole number"));
     if (time && !(*time > 0 && std::isfinite(*time)))
@@ -197,7 +197,8 @@ the same pixels as the command line (`--spp`, `--resolution WxH`, `--seed`, ...)
 changes the image. None means the scene's own value.
 
 spp: samples per pixel; resolution: (width, height); seed: of the sample sequences (0 to 2^64-1; None:
-the scene's Sampler "seed", else 0); threads: worker threads (None: all cores); integrator: path,
+the scene's Sampler "seed", else its Option "seed",
+else 0); threads: worker threads (None: all cores); integrator: path,
 volpath, bdpt, direct, lightpath, sppm, albedo or normal; max_depth: -1 (unlimited) to 100000; sampler:
 zsobol, sobol, paddedsobol, halton, pmj02bn, stratified or independent; spectral: four sampled
 wavelengths per camera sample instead of RGB; time: render whole passes until this many seconds

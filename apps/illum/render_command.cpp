@@ -6,9 +6,9 @@
 #include <fmt/core.h>
 #include <fstream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <thread>
-#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include "commands.h"
@@ -31,10 +31,9 @@ struct RenderArgs {
     int spp = 0; // 0: the scene's
     double time = 0;
     int threads = 0;
-    std::uint64_t seed = 0;
-    bool seed_given = false; // --seed given: it wins over the scene's Sampler "seed"
-    std::string integrator; // "": the scene's
-    int max_depth = -2;     // -2: the scene's
+    std::optional<std::uint64_t> seed; // none: the scene's (Sampler "seed", else Option "seed", else 0)
+    std::string integrator;            // "": the scene's
+    int max_depth = -2;                // -2: the scene's
     std::string sampler;
     std::string resolution; // WxH
     std::string stats;
@@ -80,7 +79,7 @@ struct RenderTimes {
 };
 
 void write_stats(const std::string& path, const RenderArgs& args, const Scene& scene, const RenderResult& r,
-                 const std::string& integrator, const RenderTimes& times) {
+                 const std::string& integrator, std::uint64_t seed, const RenderTimes& times) {
     nlohmann::json j;
     j["version"] = ILLUM_VERSION;
     j["scene"] = args.scene.empty() ? "<built-in cornell-box>" : args.scene;
@@ -96,7 +95,7 @@ void write_stats(const std::string& path, const RenderArgs& args, const Scene& s
     j["ranks"] = times.ranks;
     j["setup_seconds"] = times.setup_seconds;
     j["communication_seconds"] = times.communication_seconds;
-    j["seed"] = args.seed_given ? args.seed : scene.request.sampler_seed.value_or(0);
+    j["seed"] = seed;
     j["nonfinite_samples"] = r.nonfinite_samples;
     j["mode"] = args.spectral ? "spectral" : "rgb";
     j["color_space"] = std::string(scene.color_space->name());
@@ -170,13 +169,21 @@ Prepared prepare(const RenderArgs& args, bool lead, bool quiet) {
     p.options.spp = args.spp > 0 ? args.spp : p.scene->request.spp;
     p.options.time_budget = args.time;
     p.options.threads = args.threads;
-    p.options.seed = args.seed_given ? args.seed : p.scene->request.sampler_seed.value_or(0);
+    p.options.seed = args.seed ? *args.seed : p.scene->request.scene_seed();
     p.options.sampler = args.sampler.empty() ? p.scene->request.sampler : args.sampler;
     p.options.sampler_settings = p.scene->request.sampler_settings;
     p.options.quiet = quiet;
     p.options.spectral = args.spectral;
     p.write_options.exposure_stops = args.exposure;
     p.write_options.tonemap = *tonemap;
+    // EXR output as pbrt-v4 writes its film: half precision unless the film says "savefp16" false (also for
+    // -o x.exr and the built-in scene), and a crop as the data window of the full display window.
+    p.write_options.exr.half = p.scene->request.save_fp16;
+    const PixelBounds bounds = p.scene->output_bounds();
+    p.write_options.exr.display_width = p.scene->width;
+    p.write_options.exr.display_height = p.scene->height;
+    p.write_options.exr.x0 = bounds.x0;
+    p.write_options.exr.y0 = bounds.y0;
     if (!args.serve.empty()) p.serve = parse_serve_address(args.serve);
     return p;
 }
@@ -205,7 +212,8 @@ void run(const RenderArgs& args) {
         if (error.empty()) error = "failed";
     }
     MpiRun::agree(error);
-    const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double setup_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // The live preview: rank 0's, of its own share in a job of several ranks.
     std::unique_ptr<PreviewServer> server;
@@ -233,17 +241,21 @@ void run(const RenderArgs& args) {
     const int ranks = group ? group->size() : 1;
     if (!args.stats.empty()) {
         RenderTimes times{setup_seconds, group ? group->communication_seconds : 0.0, ranks};
-        write_stats(args.stats, args, *p.scene, result, p.integrator_name, times);
+        write_stats(args.stats, args, *p.scene, result, p.integrator_name, p.options.seed, times);
     }
     if (!args.quiet)
-        fmt::print(stderr, "{}x{}, {} spp in {:.2f} s: {:.3g} samples/s, {:.3g} rays/s on {}{} threads\n",
-                   p.scene->width, p.scene->height, result.spp, result.seconds, result.samples / result.seconds,
-                   result.rays / result.seconds, ranks > 1 ? fmt::format("{} ranks of ", ranks) : "",
-                   result.threads);
+        fmt::print(stderr, "{}x{}{}, {} spp in {:.2f} s: {:.3g} samples/s, {:.3g} rays/s on {}{} threads\n",
+                   result.image.width(), result.image.height(),
+                   result.image.width() != p.scene->width || result.image.height() != p.scene->height
+                       ? fmt::format(" (of {}x{})", p.scene->width, p.scene->height)
+                       : "",
+                   result.spp, result.seconds, result.samples / result.seconds, result.rays / result.seconds,
+                   ranks > 1 ? fmt::format("{} ranks of ", ranks) : "", result.threads);
     if (server) {
         server->finish();
         if (args.serve_linger > 0) {
-            if (!args.quiet) fmt::print(stderr, "preview: serving the final image for {} s\n", args.serve_linger);
+            if (!args.quiet)
+                fmt::print(stderr, "preview: serving the final image for {} s\n", args.serve_linger);
             std::this_thread::sleep_for(std::chrono::duration<double>(args.serve_linger));
         }
         server->stop();
@@ -265,13 +277,9 @@ void add_render_command(CLI::App& app) {
         ->check(positive_number());
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
         ->check(positive_integer());
-    cmd->add_option_function<std::uint64_t>(
-        "--seed",
-        [args](const std::uint64_t& v) {
-            args->seed = v;
-            args->seed_given = true;
-        },
-        "Seed of the sample sequences (default: the scene's Sampler \"seed\", else 0)");
+    cmd->add_option("--seed", args->seed,
+                    "Seed of the sample sequences (default: the scene's Sampler \"seed\", else its Option "
+                    "\"seed\", else 0)");
     cmd->add_option("--integrator", args->integrator,
                     "path, volpath, bdpt, direct, albedo, normal, lightpath or sppm (default: the scene's)");
     cmd->add_option("--max-depth", args->max_depth,
@@ -287,9 +295,10 @@ void add_render_command(CLI::App& app) {
     cmd->add_flag("--spectral", args->spectral,
                   "Render with four sampled wavelengths per camera sample (hero wavelength sampling) instead "
                   "of RGB");
-    cmd->add_option("--share", args->share,
-                    "Render only share RANK/RANKS of the samples, as that rank of an mpirun job would (to time "
-                    "a large job's ranks one by one; the image is that share's alone)");
+    cmd->add_option(
+        "--share", args->share,
+        "Render only share RANK/RANKS of the samples, as that rank of an mpirun job would (to time "
+        "a large job's ranks one by one; the image is that share's alone)");
     cmd->add_option("--serve", args->serve,
                     "Serve a live preview page at HOST:PORT or PORT (on 127.0.0.1; port 0 picks a free one) "
                     "while rendering");

@@ -1,7 +1,7 @@
 // The live preview of `illum render --serve` (apps/illum/preview_server.*): its routes answer while the
 // render runs (status, PNG frames, a pixel's radiance, the EXR) and nothing else; it binds to loopback by
 // default and stops with the render; and in a real headless Chromium the page loads, its image updates,
-// and a pixel read through the page equals the written EXR's.
+// and a pixel read through the page equals the written image's.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -68,7 +68,8 @@ std::pair<std::string, int> host_port(const std::string& url) {
 }
 
 TEST_F(Preview, ServesTheRenderWhileItRuns) {
-    std::string url = start("--resolution 64x48 --spp 64 --serve-linger 3 -q -o out.exr");
+    // out.pfm: float, as the preview serves (an EXR output is half by default, as pbrt-v4 writes its film).
+    std::string url = start("--resolution 64x48 --spp 64 --serve-linger 3 -q -o out.pfm");
     ASSERT_FALSE(url.empty()) << read_bytes(dir_ / "render.err");
     auto [host, port] = host_port(url);
     EXPECT_EQ(host, "127.0.0.1") << "loopback unless told otherwise";
@@ -110,14 +111,14 @@ TEST_F(Preview, ServesTheRenderWhileItRuns) {
         EXPECT_EQ(r->status, 404) << other << ": only its own routes";
     }
 
-    // After the render: done, and the EXR served equals the one written.
+    // After the render: done, and the EXR served holds the image written.
     for (int i = 0; i < 200 && !nlohmann::json::parse(client.Get("/status")->body)["done"]; ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     auto exr = client.Get("/image.exr");
     ASSERT_TRUE(exr);
     illum::Image served = illum::decode_exr(
         std::span(reinterpret_cast<const unsigned char*>(exr->body.data()), exr->body.size()), "image.exr");
-    EXPECT_TRUE(served == illum::read_image((dir_ / "out.exr").string()));
+    EXPECT_TRUE(served == illum::read_image((dir_ / "out.pfm").string()));
 
     // It stops with the render (after the linger): the process ends and the port closes.
     EXPECT_TRUE(ended_within(15));
@@ -158,7 +159,7 @@ TEST_F(Preview, ChromiumSeesTheImageConverge) {
     for (const char* c : {"/usr/bin/chromium", "/usr/bin/chromium-browser", "/usr/bin/google-chrome"})
         if (fs::exists(c)) chromium = c;
     if (!chromium) GTEST_SKIP() << "no Chromium (scripts/setup.sh installs Debian's)";
-    std::string url = start("--resolution 128x96 --spp 512 --serve-linger 30 -q -o out.exr");
+    std::string url = start("--resolution 128x96 --spp 512 --serve-linger 30 -q -o out.pfm");
     ASSERT_FALSE(url.empty()) << read_bytes(dir_ / "render.err");
     std::string cmd = std::string("'") + chromium + "' --headless --no-sandbox --disable-gpu --no-first-run " +
                       "--user-data-dir='" + (dir_ / "profile").string() +
@@ -183,7 +184,7 @@ TEST_F(Preview, ChromiumSeesTheImageConverge) {
     EXPECT_EQ(spp, 512);
     ::kill(pid_, SIGTERM); // no need to linger
     ASSERT_TRUE(ended_within(15));
-    illum::Image exr = illum::read_image((dir_ / "out.exr").string());
+    illum::Image exr = illum::read_image((dir_ / "out.pfm").string());
     for (int c = 0; c < 3; ++c) EXPECT_EQ(rgb[c], exr(64, 40)[c]) << "channel " << c;
     EXPECT_GT(rgb[0], 0.0f);
 }

@@ -68,8 +68,8 @@ TEST(PbrtParser, OptionsAndCamera) {
     EXPECT_EQ(s.sampler.params.get_int("pixelsamples", 0), 16);
     EXPECT_EQ(s.filter.type, "box");
     EXPECT_EQ(s.integrator.params.get_int("maxdepth", 0), 5);
-    EXPECT_EQ(s.options.at("disablepixeljitter"), "true");
-    EXPECT_EQ(s.options.at("rendercoordsys"), "world");
+    EXPECT_TRUE(s.options.get_bool("disablepixeljitter", false));
+    EXPECT_EQ(s.options.get_string("rendercoordsys", ""), "world");
     EXPECT_EQ(s.color_space, "srgb");
     EXPECT_TRUE(s.warnings.empty());
 }

@@ -1,6 +1,8 @@
 #include "illum/camera/create_camera.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
@@ -9,9 +11,50 @@
 #include "illum/camera/aperture_shape.h"
 #include "illum/camera/lens_file.h"
 #include "illum/camera/realistic_camera.h"
+#include "illum/camera/spherical_camera.h"
 #include "illum/image/image_io.h"
 
 namespace illum {
+
+namespace {
+
+// pbrt-v4's FilmBaseParameters: the crop window (NDC) if given, else the pixel bounds, else every pixel.
+PixelBounds film_pixel_bounds(const ParamSet& ps, int width, int height) {
+    std::vector<float> cw = ps.get_floats("cropwindow");
+    std::vector<int> pb = ps.get_ints("pixelbounds");
+    PixelBounds b = PixelBounds::full(width, height);
+    if (!cw.empty()) {
+        const SourceLocation& loc = ps.find("cropwindow")->loc;
+        if (cw.size() != 4) throw Error(loc, fmt::format("\"cropwindow\" needs 4 values, not {}", cw.size()));
+        for (float v : cw)
+            if (!(v >= 0 && v <= 1))
+                throw Error(loc, fmt::format("\"cropwindow\" value {} is outside [0, 1] (pixel coordinates "
+                                             "go in \"pixelbounds\")",
+                                             v));
+        auto edge = [](int n, float t) { return int(std::ceil(float(n) * t)); }; // in float, as pbrt-v4
+        b = {edge(width, std::min(cw[0], cw[1])), edge(height, std::min(cw[2], cw[3])),
+             edge(width, std::max(cw[0], cw[1])), edge(height, std::max(cw[2], cw[3]))};
+        if (b.empty())
+            throw Error(loc, fmt::format("\"cropwindow\" [{} {} {} {}] keeps no pixel of the {}x{} film",
+                                         cw[0], cw[1], cw[2], cw[3], width, height));
+        return b;
+    }
+    if (!pb.empty()) {
+        const SourceLocation& loc = ps.find("pixelbounds")->loc;
+        if (pb.size() != 4)
+            throw Error(loc, fmt::format("\"pixelbounds\" needs 4 values, not {}", pb.size()));
+        b = {std::min(pb[0], pb[1]), std::min(pb[2], pb[3]), std::max(pb[0], pb[1]), std::max(pb[2], pb[3])};
+        if (b.x0 < 0 || b.y0 < 0 || b.x1 > width || b.y1 > height)
+            throw Error(loc, fmt::format("\"pixelbounds\" [{} {} {} {}] reach outside the {}x{} film", pb[0],
+                                         pb[1], pb[2], pb[3], width, height));
+        if (b.empty())
+            throw Error(
+                loc, fmt::format("\"pixelbounds\" [{} {} {} {}] keep no pixel", pb[0], pb[1], pb[2], pb[3]));
+    }
+    return b;
+}
+
+} // namespace
 
 FilmSettings create_film(const EntityDesc& film, Diagnostics& diag) {
     if (film.type != "rgb" && film.type != "gbuffer" && film.type != "spectral")
@@ -27,6 +70,8 @@ FilmSettings create_film(const EntityDesc& film, Diagnostics& diag) {
     f.diagonal_mm = film.params.get_float("diagonal", 35);
     if (!(f.diagonal_mm > 0))
         throw Error(film.params.find("diagonal")->loc, "film diagonal must be positive");
+    f.save_fp16 = film.params.get_bool("savefp16", true);
+    f.pixel_bounds = film_pixel_bounds(film.params, f.width, f.height);
     return f;
 }
 
@@ -141,8 +186,14 @@ std::unique_ptr<Camera> create_camera(const CameraDesc& c, const FilmSettings& f
         return std::make_unique<OrthographicCamera>(world_from_camera, w, h, lens_radius, focal_distance,
                                                     &screen);
     if (c.type == "spherical") {
-        diag.unsupported(c.loc, fmt::format("camera \"{}\" is approximated by a perspective camera", c.type));
-        return std::make_unique<PerspectiveCamera>(world_from_camera, w, h, 90.0f);
+        // pbrt-v4 reads the projective parameters above for this camera too and ignores them.
+        std::string m = c.params.get_string("mapping", "equalarea");
+        std::optional<SphericalMapping> mapping = spherical_mapping_from_string(m);
+        if (!mapping)
+            throw Error(
+                c.params.find("mapping")->loc,
+                fmt::format("unknown spherical camera mapping \"{}\" (use equalarea or equirectangular)", m));
+        return std::make_unique<SphericalCamera>(world_from_camera, w, h, *mapping);
     }
     throw Error(c.loc, fmt::format("unknown camera type \"{}\"", c.type));
 }

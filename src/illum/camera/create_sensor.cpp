@@ -1,6 +1,7 @@
 #include "illum/camera/create_sensor.h"
 
 #include <fmt/format.h>
+#include <limits>
 
 namespace illum {
 
@@ -23,7 +24,13 @@ Sensor create_sensor(const EntityDesc& film, const EntityDesc& camera, const RGB
                     "\"whitebalance\" must be 0 (none) or a temperature of at least 1000 K");
     if (!(exposure > 0) || !std::isfinite(exposure))
         throw Error(camera.loc, "the exposure time (shutterclose - shutteropen) must be positive");
-    return Sensor(output, exposure * iso / 100, white_balance);
+    // The film's "maxcomponentvalue" (default +inf) limits each sample's sensor value (Sensor::to_film).
+    float max_component = film.params.get_float("maxcomponentvalue", std::numeric_limits<float>::infinity());
+    if (!(max_component > 0))
+        throw Error(film.params.find("maxcomponentvalue")->loc, "\"maxcomponentvalue\" must be positive");
+    Sensor s(output, exposure * iso / 100, white_balance);
+    s.set_max_component_value(max_component);
+    return s;
 }
 
 } // namespace illum

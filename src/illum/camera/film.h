@@ -12,9 +12,23 @@
 
 namespace illum {
 
+// The pixels a film keeps, [x0, x1) x [y0, y1) in the full image's raster (pbrt-v4's pixelBounds): the
+// camera projects onto the full resolution, the output image holds these pixels only.
+struct PixelBounds {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+    bool empty() const { return x1 <= x0 || y1 <= y0; }
+    static PixelBounds full(int width, int height) { return {0, 0, width, height}; }
+};
+
+// The pixels of `b` from `image`, whose raster is the full image's.
+Image crop(const Image& image, const PixelBounds& b);
+
 class Film {
 public:
-    Film(int width, int height) : width_(width), height_(height), sums_(std::size_t(width) * height * 4, 0.0) {}
+    Film(int width, int height)
+        : width_(width), height_(height), sums_(std::size_t(width) * height * 4, 0.0) {}
 
     int width() const { return width_; }
     int height() const { return height_; }

@@ -51,6 +51,7 @@ Sensor::Sensor(const RGBColorSpace& output, float imaging_ratio, float white_bal
     for (int i = 0; i < 9; ++i) {
         xyz_matrix_[i] = float(m[std::size_t(i)] * imaging_ratio);
         rgb_matrix_[i] = float(m_rgb[std::size_t(i)] * imaging_ratio);
+        xyz_from_rgb_[i] = float(xyz_from_rgb[std::size_t(i)] * imaging_ratio);
     }
     identity_ = imaging_ratio == 1 && white_balance_kelvin <= 0;
     x_ = DenselySampledSpectrum::from([](double l) { return cie_x(l); });

@@ -8,8 +8,10 @@
 #include <ImfOutputFile.h>
 #include <ImfRgbaFile.h>
 #include <ImfVersion.h>
+#include <algorithm>
 #include <cstring>
 #include <exception>
+#include <half.h>
 #include <vector>
 
 #include "illum/util/error.h"
@@ -165,25 +167,48 @@ Image decode_exr(std::span<const unsigned char> bytes, const std::string& name) 
     }
 }
 
-std::string encode_exr(const Image& image) {
+std::string encode_exr(const Image& image, const ExrLayout& layout) {
     if (image.empty()) throw Error("cannot encode an empty image as OpenEXR");
+    const int w = image.width(), h = image.height();
+    const int dw = layout.display_width > 0 ? layout.display_width : w;
+    const int dh = layout.display_height > 0 ? layout.display_height : h;
+    if (layout.x0 < 0 || layout.y0 < 0 || layout.x0 + w > dw || layout.y0 + h > dh)
+        throw Error("cannot encode OpenEXR: the data window lies outside the display window");
     std::string out;
     try {
-        Imf::Header header(image.width(), image.height());
+        // Windows are inclusive in OpenEXR.
+        Imath::Box2i display(Imath::V2i(0, 0), Imath::V2i(dw - 1, dh - 1));
+        Imath::Box2i data(Imath::V2i(layout.x0, layout.y0), Imath::V2i(layout.x0 + w - 1, layout.y0 + h - 1));
+        Imf::Header header(display, data);
         header.compression() = Imf::ZIP_COMPRESSION;
-        header.channels().insert("R", Imf::Channel(Imf::FLOAT));
-        header.channels().insert("G", Imf::Channel(Imf::FLOAT));
-        header.channels().insert("B", Imf::Channel(Imf::FLOAT));
+        const Imf::PixelType type = layout.half ? Imf::HALF : Imf::FLOAT;
+        for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(type));
         StringOStream stream(out);
         Imf::OutputFile file(stream, header);
         Imf::FrameBuffer fb;
-        Color3* pixels = const_cast<Color3*>(image.data()); // OpenEXR only reads through these pointers
-        const std::size_t xs = sizeof(Color3), ys = sizeof(Color3) * std::size_t(image.width());
-        fb.insert("R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(&pixels->r), xs, ys));
-        fb.insert("G", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(&pixels->g), xs, ys));
-        fb.insert("B", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(&pixels->b), xs, ys));
+        // OpenEXR addresses a slice by the data window's absolute coordinates: the base pointer is moved
+        // back by the window's origin (Slice::Make does that arithmetic without forming the pointer early).
+        std::vector<half> halves;
+        if (layout.half) {
+            halves.resize(std::size_t(w) * h * 3);
+            constexpr float kHalfMax = 65504.0f;
+            for (std::size_t i = 0; i < std::size_t(w) * h; ++i)
+                for (int c = 0; c < 3; ++c) halves[3 * i + c] = half(std::min(image.data()[i][c], kHalfMax));
+            const std::size_t xs = 3 * sizeof(half), ys = xs * std::size_t(w);
+            for (int c = 0; c < 3; ++c)
+                fb.insert(c == 0   ? "R"
+                          : c == 1 ? "G"
+                                   : "B",
+                          Imf::Slice::Make(Imf::HALF, &halves[std::size_t(c)], data, xs, ys));
+        } else {
+            Color3* pixels = const_cast<Color3*>(image.data()); // OpenEXR only reads through these pointers
+            const std::size_t xs = sizeof(Color3), ys = sizeof(Color3) * std::size_t(w);
+            fb.insert("R", Imf::Slice::Make(Imf::FLOAT, &pixels->r, data, xs, ys));
+            fb.insert("G", Imf::Slice::Make(Imf::FLOAT, &pixels->g, data, xs, ys));
+            fb.insert("B", Imf::Slice::Make(Imf::FLOAT, &pixels->b, data, xs, ys));
+        }
         file.setFrameBuffer(fb);
-        file.writePixels(image.height());
+        file.writePixels(h);
     } catch (const std::exception& e) {
         throw Error(std::string("OpenEXR: ") + e.what());
     }

@@ -69,7 +69,7 @@ void write_image(const Image& image, const std::string& path, const WriteOptions
     std::string bytes;
     try {
         if (ext == ".exr")
-            bytes = encode_exr(image);
+            bytes = encode_exr(image, opts.exr);
         else if (ext == ".pfm")
             bytes = encode_pfm(image);
         else if (ext == ".hdr")

@@ -190,8 +190,12 @@ SampledSpectrum connect(const PathContext& ctx, PathVertex* lv, PathVertex* cv, 
 BDPTIntegrator::BDPTIntegrator(const Scene& scene, int max_depth)
     : WholeImageIntegrator(scene), max_depth_(max_depth < 0 ? kUnboundedDepth : max_depth) {
     if (!scene.camera || !scene.camera->has_importance())
-        throw Error("integrator \"bdpt\" needs a perspective camera or an orthographic one without a lens "
-                    "(the realistic camera and a thin-lens orthographic one have no importance function)");
+        throw Error(
+            scene.camera_loc,
+            fmt::format("integrator \"bdpt\" cannot use camera \"{}\": it needs a perspective camera or an "
+                        "orthographic one without a lens (the realistic and spherical cameras and a "
+                        "thin-lens orthographic one have no importance function)",
+                        scene.camera_type));
 }
 
 namespace {
@@ -235,16 +239,18 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
     // One splat film per strategy image (pbrt-v4's weightFilms), for depths 0..maxdepth.
     std::vector<SplatFilm> strategy_films;
     if (visualize)
-        for (int i = 0; i < strategy_index(0, max_depth + 3); ++i) strategy_films.emplace_back(w, h, *scene_.filter);
+        for (int i = 0; i < strategy_index(0, max_depth + 3); ++i)
+            strategy_films.emplace_back(w, h, *scene_.filter);
 
     // One pixel sample: both subpaths, then every strategy.
     auto trace = [&](ThreadContext& tc, Subpaths& sp, int x, int y, ChunkOutput& out) {
         Sampler& sampler = tc.sampler;
         tc.arena.reset();
-        FilterSample fs = scene_.filter->sample(sampler.get_pixel_2d());
+        FilterSample fs = scene_.pixel_filter_sample(sampler.get_pixel_2d());
         Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
         Point2f u_lens = sampler.get_2d();
-        tc.lambda = spectral ? SampledWavelengths::sample_visible(sampler.get_1d(), scene_.color_space)
+        tc.lambda = spectral ? SampledWavelengths::sample_visible(scene_.wavelength_sample(sampler.get_1d()),
+                                                                  scene_.color_space)
                              : SampledWavelengths::rgb_mode();
         if (dispersive_camera) tc.lambda.terminate_secondary();
         const std::uint32_t pixel = std::uint32_t(y) * std::uint32_t(w) + std::uint32_t(x);
@@ -332,19 +338,20 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
                     SampledSpectrum v = visualize_weights ? c : (w > 0 ? c / w : SampledSpectrum(0.0f));
                     out.strategy_splats.push_back(
                         {strategy_index(s, t),
-                         {t == 1 ? p_raster : p_film, scene_.sensor.to_rgb(Radiance3(v), tc.lambda)}});
+                         {t == 1 ? p_raster : p_film, scene_.sensor.to_film(Radiance3(v), tc.lambda)}});
                 }
                 if (t == 1)
-                    out.splats.push_back({p_raster, scene_.sensor.to_rgb(Radiance3(c), tc.lambda)});
+                    out.splats.push_back({p_raster, scene_.sensor.to_film(Radiance3(c), tc.lambda)});
                 else
                     l += c;
             }
-        out.estimates.push_back({pixel, scene_.sensor.to_rgb(Radiance3(l), tc.lambda), fs.weight});
+        out.estimates.push_back({pixel, scene_.sensor.to_film(Radiance3(l), tc.lambda), fs.weight});
     };
 
     std::uint64_t nonfinite = 0;
     const bool timed = options.time_budget > 0;
-    Progress progress("render", timed ? 0 : pixels * std::uint64_t(sample_share(options.group).count(options.spp)),
+    Progress progress("render",
+                      timed ? 0 : pixels * std::uint64_t(sample_share(options.group).count(options.spp)),
                       "samples", options.quiet);
     int passes = run_chunked_schedule<ChunkOutput>(
         options, pixels, arena, progress,
@@ -386,7 +393,8 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
             if (t == 0 || (s == 1 && t == 1)) continue;
             SplatFilm& f = strategy_films[std::size_t(strategy_index(s, t))];
             if (options.group) options.group->sum(f.accumulators(), false);
-            r.extra_images.push_back({fmt::format("bdpt_d{:02}_s{:02}_t{:02}.exr", depth, s, t), f.resolve(r.spp)});
+            r.extra_images.push_back(
+                {fmt::format("bdpt_d{:02}_s{:02}_t{:02}.exr", depth, s, t), f.resolve(r.spp)});
         }
     r.samples = pixels * std::uint64_t(r.spp);
     r.threads = threads;

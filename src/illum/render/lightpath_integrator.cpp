@@ -1,6 +1,7 @@
 #include "illum/render/lightpath_integrator.h"
 
 #include <algorithm>
+#include <fmt/format.h>
 #include <oneapi/tbb/enumerable_thread_specific.h>
 #include <oneapi/tbb/global_control.h>
 #include <oneapi/tbb/parallel_for.h>
@@ -36,8 +37,12 @@ LightPathIntegrator::LightPathIntegrator(const Scene& scene, int max_depth, bool
     : WholeImageIntegrator(scene), max_depth_(max_depth), caustics_only_(caustics_only) {
     if (!scene.camera || !scene.camera->has_importance())
         throw Error(
-            "integrator \"lightpath\" needs a perspective camera or an orthographic one without a lens "
-            "(the realistic camera and a thin-lens orthographic one have no importance function)");
+            scene.camera_loc,
+            fmt::format(
+                "integrator \"lightpath\" cannot use camera \"{}\": it needs a perspective camera or an "
+                "orthographic one without a lens (the realistic and spherical cameras and a "
+                "thin-lens orthographic one have no importance function)",
+                scene.camera_type));
 }
 
 int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::vector<Splat>& out) const {
@@ -49,10 +54,11 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
             ++dropped;
             return;
         }
-        out.push_back({p_raster, scene_.sensor.to_rgb(l, tc.lambda)});
+        out.push_back({p_raster, scene_.sensor.to_film(l, tc.lambda)});
     };
 
-    tc.lambda = spectral ? SampledWavelengths::sample_visible(sampler.get_1d(), scene_.color_space)
+    tc.lambda = spectral ? SampledWavelengths::sample_visible(scene_.wavelength_sample(sampler.get_1d()),
+                                                              scene_.color_space)
                          : SampledWavelengths::rgb_mode();
     float pmf = 0;
     const Light* light = scene_.light_sampler.sample(sampler.get_1d(), &pmf);
@@ -249,7 +255,8 @@ RenderResult LightPathIntegrator::render_image(const RenderOptions& options) con
     };
     std::uint64_t nonfinite = 0;
     const bool timed = options.time_budget > 0;
-    Progress progress("render", timed ? 0 : pixels * std::uint64_t(sample_share(options.group).count(options.spp)),
+    Progress progress("render",
+                      timed ? 0 : pixels * std::uint64_t(sample_share(options.group).count(options.spp)),
                       "samples", options.quiet);
     int passes = run_chunked_schedule<ChunkSplats>(
         options, pixels, arena, progress,

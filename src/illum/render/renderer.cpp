@@ -20,12 +20,29 @@ struct Tile {
     int x0, y0, x1, y1;
 };
 
-std::vector<Tile> make_tiles(int w, int h, int size) {
+// Tiles of the pixels b keeps, in the full image's raster.
+std::vector<Tile> make_tiles(const PixelBounds& b, int size) {
     std::vector<Tile> tiles;
-    for (int y = 0; y < h; y += size)
-        for (int x = 0; x < w; x += size)
-            tiles.push_back({x, y, std::min(x + size, w), std::min(y + size, h)});
+    for (int y = b.y0; y < b.y1; y += size)
+        for (int x = b.x0; x < b.x1; x += size)
+            tiles.push_back({x, y, std::min(x + size, b.x1), std::min(y + size, b.y1)});
     return tiles;
+}
+
+// A whole-image integrator's result, cropped to the film's pixel bounds. Light tracing, BDPT and photon
+// mapping render the whole film: their light paths splat onto any pixel, so the kept pixels are only
+// right if every pixel's paths were traced (pbrt-v4 traces the crop's alone, which leaves out the light
+// reaching the crop through the splats of paths started elsewhere).
+// An image already of the bounds' size (volpath's caustics sum render()'s cropped camera paths with their
+// own crop) stays.
+RenderResult cropped(RenderResult r, const Scene& scene) {
+    const PixelBounds b = scene.output_bounds();
+    auto keep = [&](Image& image) {
+        if (image.width() == scene.width && image.height() == scene.height) image = crop(image, b);
+    };
+    keep(r.image);
+    for (auto& extra : r.extra_images) keep(extra.image);
+    return r;
 }
 
 } // namespace
@@ -60,15 +77,19 @@ int sum_over_group(const RenderOptions& options, int passes, std::span<double> a
 
 RenderResult render(const Scene& scene, const Integrator& integrator, const RenderOptions& options) {
     if (options.spp <= 0 && options.time_budget <= 0) throw Error("samples per pixel must be positive");
+    const PixelBounds bounds = scene.output_bounds();
     if (auto* whole = dynamic_cast<const WholeImageIntegrator*>(&integrator))
-        return whole->render_image(options);
+        return cropped(whole->render_image(options), scene);
+    // The film covers the full image (a preview shows the kept pixels in place); only the pixels of
+    // `bounds` are rendered, each from its own (seed, pixel, index) sample sequence, so they equal the
+    // same pixels of an uncropped render.
     const int w = scene.width, h = scene.height;
     int threads = render_threads(options);
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
     tbb::task_arena arena(threads);
 
     Film film(w, h);
-    std::vector<Tile> tiles = make_tiles(w, h, options.tile_size);
+    std::vector<Tile> tiles = make_tiles(bounds, options.tile_size);
     const Sampler prototype = make_sampler(options, options.spp > 0 ? options.spp : 1, {w, h});
     tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });
     std::atomic<std::uint64_t> nonfinite{0};
@@ -79,7 +100,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     const bool dispersive_camera = spectral && scene.camera->is_dispersive();
 
     const bool timed = options.time_budget > 0;
-    std::uint64_t pixels = std::uint64_t(w) * h;
+    std::uint64_t pixels = std::uint64_t(bounds.width()) * bounds.height();
     const SampleShare share = sample_share(options.group);
     Progress progress("render", timed ? 0 : pixels * std::uint64_t(share.count(options.spp)), "samples",
                       options.quiet);
@@ -95,11 +116,12 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                         for (int x = t.x0; x < t.x1; ++x)
                             for (int k = k0; k < k1; ++k) {
                                 tc.sampler.start_pixel_sample({x, y}, share.index(k));
-                                FilterSample fs = scene.filter->sample(tc.sampler.get_pixel_2d());
+                                FilterSample fs = scene.pixel_filter_sample(tc.sampler.get_pixel_2d());
                                 Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
                                 Point2f u_lens = tc.sampler.get_2d();
-                                tc.lambda = spectral ? SampledWavelengths::sample_visible(tc.sampler.get_1d(),
-                                                                                          scene.color_space)
+                                tc.lambda = spectral ? SampledWavelengths::sample_visible(
+                                                           scene.wavelength_sample(tc.sampler.get_1d()),
+                                                           scene.color_space)
                                                      : SampledWavelengths::rgb_mode();
                                 // RGB mode: the camera sees the d line. A dispersive lens sends each
                                 // wavelength its own way: the path keeps the hero only. A vignetted sample
@@ -114,7 +136,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                     ++nonfinite;
                                     v = Radiance3(0.0f);
                                 }
-                                Color3 c = radiometric ? scene.sensor.to_rgb(v, tc.lambda) : v.rgb();
+                                Color3 c = radiometric ? scene.sensor.to_film(v, tc.lambda) : v.rgb();
                                 film.add_sample(x, y, c, fs.weight);
                             }
                     progress.add(std::uint64_t(t.x1 - t.x0) * (t.y1 - t.y0) * (k1 - k0));
@@ -131,7 +153,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     r.nonfinite_samples = nonfinite;
     r.spp = sum_over_group(options, passes, film.accumulators(), r);
     r.seconds = progress.elapsed_seconds();
-    r.image = film.resolve();
+    r.image = crop(film.resolve(), bounds);
     r.samples = pixels * std::uint64_t(r.spp);
     r.threads = threads;
     return r;

@@ -2,6 +2,7 @@
 // SceneDesc. The render loop only reads it.
 #pragma once
 
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <optional>
@@ -10,6 +11,7 @@
 
 #include "illum/bsdf/material.h"
 #include "illum/camera/camera.h"
+#include "illum/camera/film.h"
 #include "illum/camera/filter.h"
 #include "illum/camera/sensor.h"
 #include "illum/geometry/accelerator.h"
@@ -18,6 +20,7 @@
 #include "illum/medium/medium.h"
 #include "illum/render/sampler.h"
 #include "illum/texture/texture.h"
+#include "illum/util/error.h"
 
 namespace illum {
 
@@ -30,6 +33,15 @@ struct RenderRequest {
     SamplerSettings sampler_settings;     // the Sampler directive's parameters (sampler.h)
     std::optional<uint64_t> sampler_seed; // its "seed", if given
     std::string output;                   // the film's filename, "" when none
+    bool save_fp16 = true;                // the film's "savefp16": EXR output in half precision
+    // Option directives (scene_options.h).
+    std::optional<std::uint64_t> seed;
+    bool disable_pixel_jitter = false;
+    bool disable_wavelength_jitter = false;
+    bool force_diffuse = false;
+    // The sample sequences' seed: the Sampler's "seed", else Option "seed", else 0 (pbrt-v4's samplers take
+    // the Option as their seed's default).
+    std::uint64_t scene_seed() const { return sampler_seed ? *sampler_seed : seed.value_or(0); }
     // Integrator "sppm" (pbrt-v4's parameters): photons per iteration (-1: the pixel count), the initial
     // search radius [world units] and the photon streams' seed.
     long long sppm_photons_per_iteration = -1;
@@ -53,7 +65,12 @@ public:
     // (pbrt-v4's ColorSpace; one per scene here).
     Sensor sensor;
     const RGBColorSpace* color_space = &RGBColorSpace::srgb();
-    int width = 0, height = 0;
+    int width = 0, height = 0; // the film's full resolution, onto which the camera projects
+    // The pixels the output keeps (the film's cropwindow or pixelbounds; every pixel by default).
+    PixelBounds pixel_bounds;
+    // The Camera directive's position and type, for errors of integrators that cannot use the camera.
+    SourceLocation camera_loc;
+    std::string camera_type;
     // The medium the camera sits in (pbrt-v4: the outside medium current at the Camera directive).
     const Medium* camera_medium = nullptr;
     RenderRequest request;
@@ -75,6 +92,20 @@ public:
         std::vector<std::string> bounded_by;
     };
     std::vector<MediumReport> medium_reports;
+
+    // The pixel filter's sample for a camera sample, or (Option "disablepixeljitter") the pixel's centre
+    // with weight 1; u is drawn either way.
+    FilterSample pixel_filter_sample(Point2f u) const {
+        FilterSample fs = filter->sample(u);
+        return request.disable_pixel_jitter ? FilterSample{{0, 0}, 1} : fs;
+    }
+    // The sample of a path's wavelengths, or 1/2 (Option "disablewavelengthjitter").
+    float wavelength_sample(float u) const { return request.disable_wavelength_jitter ? 0.5f : u; }
+
+    // pixel_bounds, or every pixel when none were set (a scene made by hand).
+    PixelBounds output_bounds() const {
+        return pixel_bounds.empty() ? PixelBounds::full(width, height) : pixel_bounds;
+    }
 
     bool intersect(const Ray& ray, SurfaceHit* hit) const { return accelerator.intersect(ray, hit); }
     bool occluded(const Ray& ray) const { return accelerator.occluded(ray); }

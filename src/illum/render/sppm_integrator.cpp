@@ -204,7 +204,7 @@ void SppmRender::trace_camera_path(int x, int y, int iteration, const SampledWav
     sampler.start_pixel_sample({x, y}, iteration);
     // As pbrt-v4's SPPM: the pixel filter only jitters the sample; every pixel takes one sample per
     // iteration, so its weight is constant and dropped.
-    FilterSample fs = scene_.filter->sample(sampler.get_pixel_2d());
+    FilterSample fs = scene_.pixel_filter_sample(sampler.get_pixel_2d());
     Point2f p_film{float(x) + 0.5f + fs.offset.x, float(y) + 0.5f + fs.offset.y};
     Point2f u_lens = sampler.get_2d();
     SampledWavelengths lambda = pass_lambda;
@@ -331,7 +331,8 @@ void SppmRender::photon_pass(int iteration, const SampledWavelengths& pass_lambd
     std::fill(chunk_m_.begin(), chunk_m_.end(), 0u);
     // This process's photons of the iteration: all of them, or its rank's slice [lo, hi) in a group.
     const RenderGroup* group = options_.group;
-    const std::uint64_t n = group ? std::uint64_t(group->size()) : 1, r = group ? std::uint64_t(group->rank()) : 0;
+    const std::uint64_t n = group ? std::uint64_t(group->size()) : 1,
+                        r = group ? std::uint64_t(group->rank()) : 0;
     const std::uint64_t lo = photons_ * r / n, count = photons_ * (r + 1) / n - lo;
     const std::uint64_t first = std::uint64_t(iteration) * photons_ + lo;
     tbb::parallel_for(tbb::blocked_range<int>(0, chunks_, 1), [&](const auto& range) {
@@ -391,25 +392,25 @@ void SppmRender::update_pixels(tbb::task_arena& arena) {
         group->sum(group_gathered_, true);
     }
     arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixels_, 4096), [&](const auto& range) {
-        for (std::size_t i = range.begin(); i != range.end(); ++i) {
-            Color3 phi;
-            std::uint64_t m = 0;
-            if (group) {
-                const double* g = &group_gathered_[i * 4];
-                phi = Color3(float(g[0]), float(g[1]), float(g[2]));
-                m = std::uint64_t(g[3]);
-            } else {
-                chunk_sum(i, phi, m);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixels_, 4096), [&](const auto& range) {
+            for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                Color3 phi;
+                std::uint64_t m = 0;
+                if (group) {
+                    const double* g = &group_gathered_[i * 4];
+                    phi = Color3(float(g[0]), float(g[1]), float(g[2]));
+                    m = std::uint64_t(g[3]);
+                } else {
+                    chunk_sum(i, phi, m);
+                }
+                if (m == 0) continue;
+                float n_new = n_[i] + kGamma * float(m);
+                float r_new = radius_[i] * std::sqrt(n_new / (n_[i] + float(m)));
+                tau_[i] = (tau_[i] + phi) * ((r_new * r_new) / (radius_[i] * radius_[i]));
+                n_[i] = n_new;
+                radius_[i] = r_new;
             }
-            if (m == 0) continue;
-            float n_new = n_[i] + kGamma * float(m);
-            float r_new = radius_[i] * std::sqrt(n_new / (n_[i] + float(m)));
-            tau_[i] = (tau_[i] + phi) * ((r_new * r_new) / (radius_[i] * radius_[i]));
-            n_[i] = n_new;
-            radius_[i] = r_new;
-        }
-    });
+        });
     });
 }
 
@@ -475,9 +476,9 @@ RenderResult SppmRender::run(SppmStats* stats) {
             break;
         }
         SampledWavelengths lambda =
-            spectral_
-                ? SampledWavelengths::sample_visible(radical_inverse_3(std::uint32_t(k)), scene_.color_space)
-                : SampledWavelengths::rgb_mode();
+            spectral_ ? SampledWavelengths::sample_visible(
+                            scene_.wavelength_sample(radical_inverse_3(std::uint32_t(k))), scene_.color_space)
+                      : SampledWavelengths::rgb_mode();
         response_ = std::make_unique<FilmResponse>(scene_.sensor, lambda);
         SampledWavelengths terminated = lambda;
         terminated.terminate_secondary();
@@ -498,7 +499,8 @@ RenderResult SppmRender::run(SppmStats* stats) {
             timed ? progress.elapsed_seconds() / options_.time_budget : double(k + 1) / iterations_asked;
         if (timed) progress.set_fraction(fraction);
         if (options_.preview)
-            options_.preview->frame(image(k + 1), k + 1, timed ? 0 : iterations_asked, std::min(1.0, fraction));
+            options_.preview->frame(image(k + 1), k + 1, timed ? 0 : iterations_asked,
+                                    std::min(1.0, fraction));
     }
     progress.finish();
 

@@ -24,6 +24,7 @@ RenderResult VolPathCausticsIntegrator::render_image(const RenderOptions& option
     light_options.preview = nullptr;
     RenderResult r = render(scene_, camera_paths_, camera_options);
     RenderResult c = caustics_.render_image(light_options);
+    c.image = crop(c.image, scene_.output_bounds()); // render() kept the film's pixel bounds of r
     for (std::size_t i = 0; i < r.image.pixel_count(); ++i) r.image.data()[i] += c.image.data()[i];
     if (options.preview) options.preview->frame(r.image, r.spp, options.time_budget > 0 ? 0 : r.spp, 1.0);
     r.seconds += c.seconds;

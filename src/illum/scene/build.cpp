@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "illum/bsdf/create_material.h"
+#include "illum/bsdf/force_diffuse_material.h"
 #include "illum/camera/create_camera.h"
 #include "illum/camera/create_sensor.h"
 #include "illum/geometry/create_shape.h"
@@ -18,6 +19,7 @@
 #include "illum/medium/create_medium.h"
 #include "illum/medium/homogeneous_medium.h"
 #include "illum/render/create_render_request.h"
+#include "illum/render/scene_options.h"
 #include "illum/texture/texture_params.h"
 
 namespace illum {
@@ -34,12 +36,17 @@ public:
         FilmSettings film = create_film(desc_.film, diag_);
         scene_->width = film.width;
         scene_->height = film.height;
+        scene_->pixel_bounds = film.pixel_bounds;
+        scene_->camera_loc = desc_.camera.loc;
+        scene_->camera_type = desc_.camera.type.empty() ? "perspective" : desc_.camera.type;
         scene_->filter = create_filter(desc_.filter, diag_);
         scene_->camera = create_camera(desc_.camera, film, diag_);
         scene_->color_space = color_space();
         scene_->sensor = create_sensor(desc_.film, desc_.camera, *scene_->color_space, diag_);
         scene_->request = create_render_request(desc_.integrator, desc_.sampler, diag_);
         scene_->request.output = film.filename;
+        scene_->request.save_fp16 = film.save_fp16;
+        read_scene_options(desc_.options, scene_->request, diag_);
         build_media();
         scene_->camera_medium = medium_named(desc_.camera.medium, desc_.camera.medium_loc);
         build_materials();
@@ -153,6 +160,24 @@ private:
             if (!m.name.empty()) named_[m.name] = materials_.back();
         }
         default_material_ = create_material(EntityDesc{"diffuse", {}, {}}, "diffuse", ctx);
+        if (scene_->request.force_diffuse) force_diffuse();
+    }
+
+    // Option "forcediffuse": every material (a mix's parts included, through the mix) is replaced by its
+    // diffuse stand-in.
+    void force_diffuse() {
+        std::unordered_map<const Material*, const Material*> forced;
+        auto wrap = [&](const Material*& m) {
+            auto [it, fresh] = forced.try_emplace(m, nullptr);
+            if (fresh) {
+                scene_->materials.push_back(std::make_unique<ForceDiffuseMaterial>(m));
+                it->second = scene_->materials.back().get();
+            }
+            m = it->second;
+        };
+        for (const Material*& m : materials_) wrap(m);
+        for (auto& [name, m] : named_) wrap(m);
+        wrap(default_material_);
     }
 
     const Material* material_of(const MaterialRef& ref, const SourceLocation& loc) {

@@ -36,8 +36,8 @@ struct SceneDesc {
     EntityDesc sampler{"zsobol", {}, {}};
     EntityDesc filter{"gaussian", {}, {}};
     EntityDesc integrator{"volpath", {}, {}};
-    std::map<std::string, std::string> options; // Option directives: name -> value as text
-    std::string color_space = "srgb";           // the last ColorSpace directive
+    ParamSet options;                 // Option directives (render/scene_options.h reads them)
+    std::string color_space = "srgb"; // the last ColorSpace directive
 
     std::vector<MaterialDesc> materials; // anonymous and named; named ones are also in named_materials
     std::map<std::string, int> named_materials;

@@ -624,18 +624,31 @@ private:
             if (in_world_)
                 warn(loc, "ColorSpace after WorldBegin: one color space applies to the whole scene here");
         } else if (name == "Option") {
+            // pbrt-v4's parser takes `Option "name" value` (the value a bare true/false, a number or a
+            // quoted string); its documentation writes `Option "type name" value`. Both are read.
             if (f.tok.peek().kind != TokenKind::String) read_string(f, d, "\"type name\" declaration");
-            Param p = read_param(f, false);
-            std::string value;
-            if (p.type == ParamType::Bool) {
-                for (bool b : p.bools)
-                    value += std::string(value.empty() ? "" : " ") + (b ? "true" : "false");
-            } else if (!p.strings.empty()) {
-                for (auto& s : p.strings) value += (value.empty() ? "" : " ") + s;
+            if (f.tok.peek().str.find_first_of(" \t\n") == std::string::npos) {
+                Token decl = f.tok.next();
+                Token v = f.tok.next();
+                Param p;
+                p.name = decl.str;
+                p.loc = f.tok.location(decl);
+                if (v.kind == TokenKind::Word && (v.text == "true" || v.text == "false")) {
+                    p.type = ParamType::Bool;
+                    p.bools = {v.text == "true"};
+                } else if (v.kind == TokenKind::Number) {
+                    p.type = p.name == "seed" ? ParamType::Integer : ParamType::Float;
+                    p.numbers = {v.number};
+                } else if (v.kind == TokenKind::String) {
+                    p.type = ParamType::String;
+                    p.strings = {v.str};
+                } else {
+                    f.tok.fail(v, fmt::format("missing value for Option \"{}\"", p.name));
+                }
+                sc_.options.add(std::move(p));
             } else {
-                for (double v : p.numbers) value += (value.empty() ? "" : " ") + fmt::format("{}", v);
+                sc_.options.add(read_param(f, false));
             }
-            sc_.options[p.name] = value;
         }
 
         // Media.
