@@ -5,7 +5,13 @@
 #include <fmt/format.h>
 
 #include "illum/analysis/check_render.h"
+#include "illum/envmap/layout.h"
+#include "illum/geometry/disk.h"
+#include "illum/light/diffuse_area_light.h"
+#include "illum/light/goniometric_light.h"
 #include "illum/light/image_environment_light.h"
+#include "illum/light/portal_environment_light.h"
+#include "illum/light/projection_light.h"
 #include "illum/math/rng.h"
 
 namespace illum {
@@ -152,6 +158,61 @@ AttributeEnd)");
                                         1e-3));
         out.push_back(check_light_power_method(light, "image infinite light (64x32 sky, scale 2)",
                                                "Φ = s π r² Σ L Ω (latitude-longitude texels)", phi, o));
+    }
+    {
+        // Goniometric: an equal-area image brighter towards its +z; Φ = 4π I mean(Y), every texel of the
+        // map covering 4π / N².
+        const int n = 32;
+        Image img(n, n);
+        double sum = 0;
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                Vector3f d = *env_direction(EnvLayout::Octahedral, {(x + 0.5f) / n, (y + 0.5f) / n});
+                float v = 0.2f + std::max(0.0f, d.z) + 0.3f * d.x * d.x;
+                img(x, y) = Color3(v);
+                sum += v;
+            }
+        GoniometricLight light(Transform::rotate(30, {1, 0, 0}), Emission(Color3(0.5f, 1, 2)), img);
+        both(light, "goniometric light (32² equal-area image)", "Φ = 4π I mean(Y)",
+             I * float(4 * kPiD * sum / (n * n)));
+    }
+    {
+        // Projection of a constant image: the pyramid's solid angle 4 asin(sx sy / √((1 + sx²)(1 + sy²))).
+        const float fov = 50;
+        ProjectionLight light(Transform::rotate(20, {0, 1, 0}), Image(6, 3, Color3(0.5f, 1, 2)), 1.5f, fov);
+        double t = std::tan(fov / 2 * kPiD / 180), sx = 2 * t, sy = t;
+        double omega = 4 * std::asin(sx * sy / std::sqrt((1 + sx * sx) * (1 + sy * sy)));
+        both(light, "projection light (constant 6x3 image, fov 50)",
+             "Φ = s L 4 asin(sx sy / √((1+sx²)(1+sy²)))", I * float(1.5 * omega));
+    }
+    {
+        // An image area light on a disk whose image varies along u (= φ / 2π) only: the disk's area element
+        // is uniform in φ and the clamped bilinear filter integrates to the texels' mean, so Φ = π A s mean.
+        const int w = 32;
+        Image img(w, 4);
+        double mean[3] = {};
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < w; ++x) {
+                float v = 1 + 0.8f * std::sin(2 * kPi * (x + 0.5f) / w);
+                img(x, y) = Color3(v, 0.5f * v, 2 - v);
+                for (int c = 0; c < 3; ++c) mean[c] += img(x, y)[c] / (4.0 * w);
+            }
+        DiskShape disk(Transform::translate({0, 0, 1}), 0, 0.5f, 0, false);
+        DiffuseAreaLight light(&disk, std::make_shared<const Image>(img), 2.0f, false);
+        double k = kPiD * kPiD * 0.25 * 2;
+        both(light, "image area light (disk r = 0.5, image along φ, scale 2)", "Φ = π A s mean(L)",
+             Color3(float(k * mean[0]), float(k * mean[1]), float(k * mean[2])));
+    }
+    {
+        // A uniform sky L through a 0.8 x 0.6 window: Φ = A L ∫ cos θ dω = π A L (the portal within the
+        // scene).
+        auto s = light_scene("");
+        const std::array<Point3f, 4> portal{Point3f{-0.4f, -0.3f, 0.5f}, Point3f{-0.4f, 0.3f, 0.5f},
+                                            Point3f{0.4f, 0.3f, 0.5f}, Point3f{0.4f, -0.3f, 0.5f}};
+        PortalEnvironmentLight light(EnvironmentMap(Image(16, 16, Color3(0.5f, 1, 2)), EnvLayout::Octahedral),
+                                     Transform(), 1, portal);
+        light.preprocess(s->accelerator.bounds());
+        both(light, "portal light (uniform sky, 0.8 x 0.6 window)", "Φ = π A L", I * float(kPiD * 0.48));
     }
     return out;
 }

@@ -6,6 +6,8 @@
 //   θe)/2] distant         Φ = π r² E        (r: the scene's bounding sphere, which its photons cover) area
 //   (diffuse)  Φ = π L A, twice that two-sided           uniform infinite  Φ = 4π · π r² L image infinite  Φ
 //   = s π r² Σ L_texel Ω_texel, Ω = Δφ (cos θ0 - cos θ1) for a latitude-longitude texel
+//   goniometric  Φ = 4π I mean(Y)    projection (constant image)  Φ = s L · the frustum's solid angle
+//   image area (disk, image along φ)  Φ = π A s mean(L)          portal (uniform sky)  Φ = π A L
 #pragma once
 
 #include <string>

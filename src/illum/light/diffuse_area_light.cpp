@@ -2,11 +2,56 @@
 
 #include <cstring>
 
+#include "illum/light/light_image.h"
 #include "illum/math/frame.h"
 #include "illum/math/rng.h"
 #include "illum/math/warp.h"
+#include "illum/radiometry/uplift.h"
 
 namespace illum {
+
+DiffuseAreaLight::DiffuseAreaLight(const AreaShape* shape, std::shared_ptr<const Image> image, float scale,
+                                   bool two_sided)
+    : Light(LightType::Area), shape_(shape), radiance_(Color3(scale)), two_sided_(two_sided),
+      image_(std::move(image)), image_scale_(scale), image_integral_(image_integral(*shape, *image_)) {}
+
+Radiance3 DiffuseAreaLight::emitted(Normal3f n, Point2f uv, Vector3f w,
+                                    const SampledWavelengths& lambda) const {
+    if (!two_sided_ && dot(n, w) <= 0) return {};
+    if (!image_) return Radiance3(radiance_.at(lambda));
+    Color3 rgb = lookup_bilinear(*image_, Point2f{uv.x, 1 - uv.y});
+    if (rgb.is_black()) return {};
+    return Radiance3(uplift_illuminant(rgb, lambda) * image_scale_);
+}
+
+Color3 image_integral(const AreaShape& shape, const Image& image) {
+    auto integrate = [&](int n, Point2f* uv_min, Point2f* uv_max) {
+        double sum[3] = {};
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                AreaShapeSample s = shape.sample_area({(i + 0.5f) / float(n), (j + 0.5f) / float(n)});
+                if (!(s.pdf > AreaPdf(0))) continue;
+                Color3 l = lookup_bilinear(image, Point2f{s.uv.x, 1 - s.uv.y});
+                for (int c = 0; c < 3; ++c) sum[c] += double(l[c]) / double(s.pdf.value);
+                if (uv_min) {
+                    *uv_min = Point2f{std::min(uv_min->x, s.uv.x), std::min(uv_min->y, s.uv.y)};
+                    *uv_max = Point2f{std::max(uv_max->x, s.uv.x), std::max(uv_max->y, s.uv.y)};
+                }
+            }
+        double nn = double(n) * n;
+        return Color3(float(sum[0] / nn), float(sum[1] / nn), float(sum[2] / nn));
+    };
+    const int coarse = 4;
+    Point2f lo{kInfinity, kInfinity}, hi{-kInfinity, -kInfinity};
+    Color3 estimate = integrate(coarse, &lo, &hi);
+    if (!(hi.x >= lo.x)) return estimate;
+    // The texels the uv box spans (its width grows by one stratum: the samples are stratum centres).
+    double span_u = std::min(1.0, double(hi.x - lo.x) * coarse / (coarse - 1)),
+           span_v = std::min(1.0, double(hi.y - lo.y) * coarse / (coarse - 1));
+    double texels = (span_u * image.width() + 1) * (span_v * image.height() + 1);
+    int n = std::clamp(int(std::ceil(4 * std::sqrt(texels))), 8, 256);
+    return integrate(n, nullptr, nullptr);
+}
 
 bool DiffuseAreaLight::masked(Point3f p, Normal3f n, Point2f uv) const {
     if (!alpha_) return false;
@@ -33,7 +78,7 @@ std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContex
     float d2 = length_squared(d);
     if (d2 == 0) return std::nullopt;
     Vector3f wi = d / std::sqrt(d2);
-    Radiance3 l = emitted(ss->n, -wi, lambda);
+    Radiance3 l = emitted(ss->n, ss->uv, -wi, lambda);
     if (l.is_black() || masked(ss->p, ss->n, ss->uv)) return std::nullopt;
     return LightLiSample{wi, l, biradiance(l, ss->pdf), ss->pdf, ss->p, ss->p_error, ss->n, false};
 }
@@ -45,6 +90,8 @@ SolidAnglePdf DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, Vector3f w
 }
 
 Power3 DiffuseAreaLight::power() const {
+    if (image_)
+        return Power3(SampledSpectrum(image_integral_ * (image_scale_ * kPi * (two_sided_ ? 2.0f : 1.0f))));
     return lambertian_exitance(Radiance3(radiance_.rgb_value())) * Area(shape_->area()) *
            (two_sided_ ? 2.0f : 1.0f);
 }
@@ -72,7 +119,7 @@ std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2,
     SolidAnglePdf pdf_dir(cosine_hemisphere_pdf(cos_theta) * side_pmf);
     AreaPdf pdf_pos = ss.pdf;
     Point3f o = offset_ray_origin(ss.p, ss.p_error, ss.n, w);
-    Radiance3 l = emitted(ss.n, w, lambda);
+    Radiance3 l = emitted(ss.n, ss.uv, w, lambda);
     return LightLeSample{Ray{o, w}, ss.n,      l, pdf_pos, pdf_dir, l * cos_theta / pdf_pos / pdf_dir,
                          ss.p,      ss.p_error};
 }

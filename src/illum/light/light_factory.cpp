@@ -6,8 +6,12 @@
 #include <fstream>
 
 #include "illum/light/directional_light.h"
+#include "illum/light/goniometric_light.h"
 #include "illum/light/image_environment_light.h"
+#include "illum/light/light_image.h"
 #include "illum/light/point_light.h"
+#include "illum/light/portal_environment_light.h"
+#include "illum/light/projection_light.h"
 #include "illum/light/spot_light.h"
 #include "illum/light/uniform_environment_light.h"
 #include "illum/param/spectrum_param.h"
@@ -52,6 +56,56 @@ Vector3f unit_or_fail(const LightDesc& l, Vector3f v, const char* what) {
     if (!(len > 0) || !std::isfinite(len))
         throw Error(l.loc, fmt::format("light \"{}\": {} must be a non-zero direction", l.type, what));
     return v / len;
+}
+
+// pbrt-v4's GoniometricLight::Create: "I" (default the illuminant), "scale", "power" (Φ = 4π I mean(Y)), and
+// "filename": a square equal-area image whose Y (or R, G, B average) weighs the intensity per direction.
+std::unique_ptr<Light> make_goniometric_light(const LightDesc& l, float scale, Diagnostics& diag) {
+    Emission i = emission(l, "I");
+    std::optional<Image> img = read_light_image(l, "goniometric light", diag);
+    if (!img) return nullptr;
+    if (img->width() != img->height())
+        throw Error(l.params.find("filename")->loc,
+                    fmt::format("goniometric light: image resolution ({}, {}) is not square: it must be an "
+                                "equal-area (octahedral) map",
+                                img->width(), img->height()));
+    double mean_y = 0;
+    for (std::size_t k = 0; k < img->pixel_count(); ++k) mean_y += img->data()[k].average();
+    mean_y /= double(img->pixel_count());
+    if (mean_y > 0) normalise_to_power(l, i, float(4 * kPiD * mean_y));
+    return std::make_unique<GoniometricLight>(l.world_from_light, i * scale, *img);
+}
+
+// pbrt-v4's ProjectionLight::Create: "filename" (required), "fov" (90 degrees), "scale", "power" (against
+// pbrt-v4's midpoint estimate of the image's luminous power). pbrt-v4 reads no "I" for it.
+std::unique_ptr<Light> make_projection_light(const LightDesc& l, float scale, Diagnostics& diag) {
+    float fov = l.params.get_float("fov", 90);
+    if (!(fov > 0 && fov < 180))
+        throw Error(l.params.find("fov")->loc,
+                    fmt::format("projection light: fov must be in (0, 180), not {}", fov));
+    std::optional<Image> img = read_light_image(l, "projection light", diag);
+    if (!img) return nullptr;
+    float power = l.params.get_float("power", -1);
+    if (power > 0) {
+        double k = projection_power_normalisation(*img, fov);
+        if (k > 0) scale *= float(power / k);
+    }
+    return std::make_unique<ProjectionLight>(l.world_from_light, *img, scale, fov);
+}
+
+// pbrt-v4's "portal" of an infinite light: four points in world space (pbrt-v4 takes them from world to
+// render space, not through the light's transform) forming a planar rectangle, p0 and p2 opposite.
+std::optional<std::array<Point3f, 4>> read_portal(const LightDesc& l) {
+    const Param* p = l.params.find("portal");
+    if (!p) return std::nullopt;
+    std::vector<Point3f> pts = l.params.get_point3s("portal");
+    if (pts.size() != 4)
+        throw Error(p->loc, fmt::format("infinite light: \"portal\" needs 4 points, not {}", pts.size()));
+    std::array<Point3f, 4> portal{pts[0], pts[1], pts[2], pts[3]};
+    std::string problem = portal_shape_problem(portal);
+    if (!problem.empty())
+        throw Error(p->loc, fmt::format("infinite light: \"portal\" is not a planar rectangle: {}", problem));
+    return portal;
 }
 
 } // namespace
@@ -107,15 +161,11 @@ std::unique_ptr<Light> make_light(const LightDesc& l, Diagnostics& diag) {
             throw Error(
                 l.params.find("sampling")->loc,
                 fmt::format("\"sampling\" must be importance, uniform or none, not \"{}\"", sampling_name));
-        if (const Param* portal = l.params.find("portal")) {
-            // pbrt-v4 then emits only in the directions the portal (a window quadrilateral) covers and
-            // samples those better; illum keeps the whole map: the same image wherever the scene's walls
-            // hide the other directions, as they do in the interiors portals are meant for.
-            portal->used = true;
-            diag.unsupported(portal->loc,
-                             "infinite light \"portal\" is not supported: the whole environment emits and is "
-                             "sampled");
-        }
+        std::optional<std::array<Point3f, 4>> portal = read_portal(l);
+        if (portal && sampling != EnvSampling::Importance)
+            throw Error(l.params.find("sampling")->loc,
+                        "infinite light: a \"portal\" light samples through its portal; \"sampling\" cannot "
+                        "be changed");
         std::string filename = l.params.get_string("filename", "");
         if (!filename.empty()) {
             // pbrt-v4 refuses both ("Can't specify both emission L and filename"): which one was meant
@@ -152,11 +202,21 @@ std::unique_ptr<Light> make_light(const LightDesc& l, Diagnostics& diag) {
             if (light->map().mean_radiance().is_black())
                 diag.unsupported(l.loc,
                                  fmt::format("environment map \"{}\" is black: it emits nothing", filename));
+            if (portal)
+                return std::make_unique<PortalEnvironmentLight>(light->map(), l.world_from_light,
+                                                                light->scale(), *portal);
             return light;
         }
         Emission c = emission(l, "L");
         // A constant environment L gives illuminance π L on an upward surface.
         if (illuminance > 0) c *= illuminance / kPi; // pbrt-v4: the RGB multiplier is kept, as for "power"
+        if (portal) {
+            // pbrt-v4 makes a one-texel image of L's RGB for a portal (a spectral L is then rendered by its
+            // RGB).
+            Image img(8, 8, c.rgb);
+            return std::make_unique<PortalEnvironmentLight>(
+                EnvironmentMap(std::move(img), EnvLayout::Octahedral), l.world_from_light, scale, *portal);
+        }
         if (sampling != EnvSampling::Importance) {
             // Let the image light implement the sampling modes on a one-texel map.
             // (A spectral L is then rendered by its RGB, uplifted.)
@@ -166,10 +226,8 @@ std::unique_ptr<Light> make_light(const LightDesc& l, Diagnostics& diag) {
         }
         return std::make_unique<UniformEnvironmentLight>(c * scale);
     }
-    if (l.type == "goniometric" || l.type == "projection") {
-        diag.unsupported(l.loc, fmt::format("light \"{}\" is not supported yet and is skipped", l.type));
-        return nullptr;
-    }
+    if (l.type == "goniometric") return make_goniometric_light(l, scale, diag);
+    if (l.type == "projection") return make_projection_light(l, scale, diag);
     throw Error(l.loc, fmt::format("unknown light type \"{}\"", l.type));
 }
 

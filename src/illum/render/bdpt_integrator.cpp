@@ -321,8 +321,10 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         }
 
         SampledSpectrum l(0.0f);
+        // s = 1 samples a light of its own, so it runs even when the light subpath is empty (a photon that
+        // carries nothing: an alpha-masked point, a portal light's photon whose line misses the portal).
         for (int t = 1; t <= n_camera; ++t)
-            for (int s = 0; s <= n_light; ++s) {
+            for (int s = 0; s <= std::max(n_light, 1); ++s) {
                 int depth = s + t - 2;
                 if ((s == 1 && t == 1) || depth < 0 || depth > max_depth) continue;
                 Point2f p_raster;

@@ -154,7 +154,9 @@ SampledSpectrum vertex_le(const PathContext& ctx, const PathVertex& v, const Pat
     w = w / std::sqrt(d2);
     if (v.is_infinite_light()) {
         SampledSpectrum le(0.0f);
-        for (const Light* l : ctx.scene.infinite_lights) le += l->le(Ray{v.p, -w}, ctx.tc.lambda).s;
+        // The ray from the vertex that sees the environment: a portal light's radiance depends on where the
+        // ray starts (v.p only marks the direction).
+        for (const Light* l : ctx.scene.infinite_lights) le += l->le(Ray{towards.p, -w}, ctx.tc.lambda).s;
         return le;
     }
     if (v.type == VertexType::Surface) return v.hit.area_light->radiance(v.hit, w, ctx.tc.lambda).s;

@@ -205,9 +205,7 @@ private:
             if (e) {
                 for (std::uint32_t t = 0; t < g->mesh->triangle_count(); ++t) {
                     scene_->light_shapes.push_back(std::make_unique<TriangleShape>(g->mesh.get(), t));
-                    auto light = std::make_unique<DiffuseAreaLight>(scene_->light_shapes.back().get(),
-                                                                    e->for_area(g->mesh->triangle_area(t)),
-                                                                    e->two_sided);
+                    auto light = e->make_light(scene_->light_shapes.back().get(), g->mesh->triangle_area(t));
                     light->set_alpha(g->alpha);
                     set_light_media(*light, s, mi);
                     tri_lights.push_back(light.get());
@@ -219,8 +217,7 @@ private:
         }
         const Light* light = nullptr;
         if (e) {
-            auto l = std::make_unique<DiffuseAreaLight>(g->analytic.get(), e->for_area(g->analytic->area()),
-                                                        e->two_sided);
+            auto l = e->make_light(g->analytic.get(), g->analytic->area());
             l->set_alpha(g->alpha);
             set_light_media(*l, s, mi);
             light = l.get();
