@@ -232,6 +232,34 @@ TEST_F(SurfaceDetailScenes, TiltedNormalMapInTheNormalAov) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(right[c], n[c], 0.02f) << c; // the box filter averages φ
 }
 
+TEST_F(SurfaceDetailScenes, InstancesCarryTheirPartialsToTheWorld) {
+    // The square as an object instance turned 90° about z: its ∂p/∂u becomes +y, so the 25° map tilts the
+    // normal to (0, sin 25°, cos 25°); the bump d = 0.8 u, likewise turned, to (0, -0.8, 2)/|·|.
+    std::string object = fmt::format(R"(
+Texture "ramp" "float" "bilerp" "float v00" 0 "float v01" 0 "float v10" 0.8 "float v11" 0.8
+ObjectBegin "mapped"
+Material "diffuse" "string normalmap" "{}"
+{}
+ObjectEnd
+ObjectBegin "bumped"
+Material "diffuse" "texture displacement" "ramp"
+{}
+ObjectEnd
+AttributeBegin
+Rotate 90 0 0 1
+ObjectInstance "{{}}"
+AttributeEnd
+)",
+                                     path("tilted.pfm"), kSquare, kSquare);
+    const Vector3f mapped(0, float(std::sin(25 * kDeg)), float(std::cos(25 * kDeg)));
+    const Vector3f bumped = normalize(Vector3f(0, -0.8f, 2));
+    for (auto [name, expected] : {std::pair{"mapped", mapped}, std::pair{"bumped", bumped}}) {
+        Image img =
+            test::render_pbrt(lit(fmt::format(fmt::runtime(object), name), {0, 0, 1}, "normal"), aov()).image;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean(img, c), expected[c], 1e-5) << name << " channel " << c;
+    }
+}
+
 TEST_F(SurfaceDetailScenes, BumpedAndMappedSurfacesReflectLambertAtThePerturbedNormal) {
     // Lambert under a distant light of irradiance E (at normal incidence): L = ρ/π E max(0, cos) to the
     // shading normal. A flat surface gives ρ/π E cos α for the light at α from the normal, so the ratio of
