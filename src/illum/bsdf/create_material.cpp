@@ -287,7 +287,10 @@ private:
                             fmt::format("undefined named material \"{}\"", names[i]));
             ab[i] = it->second;
         }
-        return own(std::make_unique<MixMaterial>(ab[0], ab[1], tex_.scalar(m_.params, "amount", 0.5f)));
+        auto mix = std::make_unique<MixMaterial>(ab[0], ab[1], tex_.scalar(m_.params, "amount", 0.5f));
+        mix->has_surface_detail =
+            (ab[0] && ab[0]->has_surface_detail) || (ab[1] && ab[1]->has_surface_detail);
+        return own(std::move(mix));
     }
 
     // A registry model, e.g. Material "ward" "rgb rho_d" [0.2 0.1 0.05] "texture rho_s" "tex", or a pbrt-v4
@@ -345,7 +348,22 @@ private:
 } // namespace
 
 const Material* create_material(const EntityDesc& m, const std::string& type, MaterialContext& ctx) {
-    return MaterialMaker(m, ctx).make(type);
+    // pbrt-v4 reads "displacement" and "normalmap" for every material but "mix" and "interface" (and its
+    // "hair", which has neither); those leave them to the unused-parameter warning.
+    const bool detail = type != "mix" && type != "interface" && type != "hair";
+    std::unique_ptr<const SurfaceDetail> surface_detail =
+        detail ? read_surface_detail(m, ctx.textures) : nullptr;
+    const Material* made = MaterialMaker(m, ctx).make(type);
+    if (surface_detail) {
+        // The material just made is among the owned ones (the last, or before its inner parts).
+        for (auto it = ctx.owned.rbegin(); it != ctx.owned.rend(); ++it)
+            if (it->get() == made) {
+                (*it)->surface_detail = std::move(surface_detail);
+                (*it)->has_surface_detail = true;
+                break;
+            }
+    }
+    return made;
 }
 
 } // namespace illum

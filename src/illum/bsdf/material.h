@@ -6,6 +6,7 @@
 
 #include "illum/bsdf/bxdf.h"
 #include "illum/bsdf/lambert.h"
+#include "illum/bsdf/surface_detail.h"
 #include "illum/geometry/surface_hit.h"
 #include "illum/medium/medium.h"
 #include "illum/radiometry/uplift.h"
@@ -28,10 +29,40 @@ public:
     // the shape), or none. The scene makes it the inside of the shape's MediumInterface.
     virtual const Medium* interior() const { return nullptr; }
 
+    // The material that shades a hit: itself; a mix picks one of its components (pbrt-v4 resolves a mix
+    // before bump mapping, so the chosen material's surface detail applies).
+    virtual const Material* resolve(const SurfaceHit&) const { return this; }
+
     // Whether the material may scatter by a delta lobe (a mirror, smooth glass): false only where that is
     // known not to happen, so a scene without such materials has no caustics to trace from the lights.
     bool may_be_specular = true;
+    // pbrt-v4's "normalmap" and "displacement" of this material (null: none), and whether surface detail
+    // may apply at its hits at all (its own, or, for a mix, a component's): the one test a material
+    // without detail pays.
+    std::unique_ptr<const SurfaceDetail> surface_detail;
+    bool has_surface_detail = false;
 };
+
+// Resolves the hit's material (a mix to its component) and applies that material's surface detail to the
+// hit's shading geometry (ns, dpdu, dpdv); returns the resolved material (null for none).
+inline const Material* apply_surface_detail(SurfaceHit& hit) {
+    const Material* m = hit.material ? hit.material->resolve(hit) : nullptr;
+    if (m && m->surface_detail) m->surface_detail->apply(hit);
+    return m;
+}
+
+// The BSDF at a hit, as pbrt-v4's SurfaceInteraction::GetBSDF builds it: the material's normal or bump map
+// first changes the hit's shading geometry (so the integrator's cosines |wi · ns| see it too), then the
+// material makes its BSDF there. No material: an empty BSDF (an interface).
+inline BSDF surface_bsdf(SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) {
+    const Material* m = hit.material;
+    if (!m) return BSDF();
+    if (m->has_surface_detail) [[unlikely]] {
+        m = apply_surface_detail(hit);
+        if (!m) return BSDF();
+    }
+    return m->bsdf(hit, lambda, arena);
+}
 
 class DiffuseMaterial final : public Material {
 public:

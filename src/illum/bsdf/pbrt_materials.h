@@ -248,6 +248,10 @@ public:
         const Material* m = choose(hit);
         return m ? m->bsdf(hit, lambda, arena) : BSDF();
     }
+    const Material* resolve(const SurfaceHit& hit) const override {
+        const Material* m = choose(hit);
+        return m ? m->resolve(hit) : nullptr;
+    }
     Color3 albedo(const SurfaceHit& hit) const override {
         float t = std::clamp(amount_->evaluate(hit), 0.0f, 1.0f);
         return (a_ ? a_->albedo(hit) : Color3(0.0f)) * (1 - t) + (b_ ? b_->albedo(hit) : Color3(0.0f)) * t;

@@ -741,7 +741,9 @@ ModelArg model_arg(const ModelSpec& model, const ParamSpec& spec, const Param& p
 ParamValues resolve_params(const ModelSpec& model, const ParamSet& params, TextureParams* textures,
                            bool pbrt_alias) {
     for (const Param& p : params.params()) {
-        if (p.name == "type" || pbrt_alias) continue; // "type": MakeNamedMaterial's own
+        // "type": MakeNamedMaterial's own; "displacement" and "normalmap": every material's
+        // (surface_detail.h)
+        if (p.name == "type" || p.name == "displacement" || p.name == "normalmap" || pbrt_alias) continue;
         bool known = false;
         for (const auto& ps : model.params) known = known || ps.name == p.name;
         if (!known) {

@@ -327,6 +327,7 @@ bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
     hit->n = normalize(w(hit->n));
     hit->ns = normalize(w(hit->ns));
     hit->dpdu = w(hit->dpdu);
+    hit->world_from_instance = &w;
     hit->wo = normalize(-ray.d);
     return true;
 }
@@ -349,6 +350,7 @@ void Accelerator::fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ra
     hit->material = rec.material;
     hit->medium_interface = rec.medium_interface;
     hit->medium = ray.medium;
+    hit->world_from_instance = nullptr; // intersect() sets it for a hit in an instance
     hit->area_light = rec.lights.empty() ? nullptr : rec.lights[rec.kind == Kind::Mesh ? rh.hit.primID : 0];
 }
 

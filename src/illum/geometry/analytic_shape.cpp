@@ -122,6 +122,13 @@ Normal3f AnalyticShape::world_normal(Vec3d n) const {
     return {float(w.x * inv), float(w.y * inv), float(w.z * inv)};
 }
 
+Normal3f AnalyticShape::world_normal_derivative(Vec3d n) const {
+    const Matrix4& a = world_from_object_.inverse_matrix(); // as normals: by M^-T
+    return {float(a(0, 0) * n.x + a(1, 0) * n.y + a(2, 0) * n.z),
+            float(a(0, 1) * n.x + a(1, 1) * n.y + a(2, 1) * n.z),
+            float(a(0, 2) * n.x + a(1, 2) * n.y + a(2, 2) * n.z)};
+}
+
 double AnalyticShape::area_scale(Vec3d n) const {
     if (similarity_) return scale_ * scale_;
     const Matrix4& a = world_from_object_.inverse_matrix();
@@ -165,6 +172,15 @@ void AnalyticShape::fill_hit(float t, const Ray& ray, SurfaceHit* hit) const {
     hit->ns = hit->n;
     hit->uv = sp.uv;
     hit->dpdu = to_world(sp.dpdu);
+    hit->partials_source = this;
+    hit->local = {float(sp.p.x), float(sp.p.y), float(sp.p.z)};
+}
+
+ShadingPartials AnalyticShape::shading_partials(std::uint32_t, Point3f local) const {
+    SurfacePoint sp = surface_at(Vec3d{local.x, local.y, local.z});
+    SecondPartials d = partials_at(sp);
+    return {to_world(sp.dpdu), to_world(d.dpdv), world_normal_derivative(d.dndu),
+            world_normal_derivative(d.dndv)};
 }
 
 SurfaceHit AnalyticShape::alpha_point(const Crossing& c) const {

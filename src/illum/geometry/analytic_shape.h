@@ -56,7 +56,7 @@ struct Crossing {
     int root = 0;
 };
 
-class AnalyticShape : public AreaShape {
+class AnalyticShape : public AreaShape, public ShadingPartialsSource {
 public:
     AnalyticShape(const Transform& world_from_object, bool flip_normal);
 
@@ -65,6 +65,8 @@ public:
     int crossings(const Ray& ray, float tmin, float tmax, Crossing out[2]) const;
     // Fills a hit at ray parameter t (the point is reprojected onto the surface).
     void fill_hit(float t, const Ray& ray, SurfaceHit* hit) const;
+    // pbrt-v4's partials at the object-space point `local` (∂n/∂u, ∂n/∂v carried to the world as normals).
+    ShadingPartials shading_partials(std::uint32_t prim, Point3f local) const override;
     // The point, normal and uv of a crossing: what an alpha texture is evaluated at.
     SurfaceHit alpha_point(const Crossing& c) const;
 
@@ -105,6 +107,12 @@ protected:
     virtual bool inside_clip(Vec3d p) const = 0;
     // The surface point nearest to the (almost on-surface) object point p.
     virtual SurfacePoint surface_at(Vec3d p) const = 0;
+    // ∂p/∂v, ∂n/∂u and ∂n/∂v of the outward unit normal at a surface point (pbrt-v4's values: what the
+    // Weingarten equations give), for bump mapping only.
+    struct SecondPartials {
+        Vec3d dpdv, dndu, dndv;
+    };
+    virtual SecondPartials partials_at(const SurfacePoint& sp) const = 0;
     // A point uniformly distributed by object-space area, and that area.
     virtual Vec3d sample_object(Point2f u) const = 0;
     virtual double object_area() const = 0;
@@ -116,7 +124,9 @@ protected:
     Point3f to_world(Vec3d p, Vector3f* p_error) const;
     Vector3f to_world(Vec3d v) const;
     Normal3f world_normal(Vec3d n_obj) const; // normalised, flipped as the orientation says
-    // The area scale J = |det M| |M^-T n| at unit object normal n.
+    // A normal's derivative (∂n/∂u) carried as pbrt-v4 carries it: by M^-T, neither normalised nor flipped.
+    Normal3f world_normal_derivative(
+        Vec3d dn_obj) const; // The area scale J = |det M| |M^-T n| at unit object normal n.
     double area_scale(Vec3d n) const;
 
 private:

@@ -102,7 +102,9 @@ std::unique_ptr<TriangleMesh> ply_mesh(const ShapeDesc& s, Diagnostics& diag) {
         diag.unsupported(s.loc, fmt::format("plymesh \"{}\" has no triangles and is skipped", file));
         return nullptr;
     }
-    if (s.params.has("displacement")) diag.unsupported(s.loc, "plymesh displacement is ignored");
+    if (s.params.has("displacement"))
+        diag.unsupported(s.loc, "plymesh \"displacement\" (vertices displaced after subdivision to "
+                                "\"edgelength\") is ignored; a material's \"displacement\" bump-maps");
     auto mesh = std::make_unique<TriangleMesh>();
     mesh->p = std::move(data.positions);
     mesh->n = std::move(data.normals);

@@ -35,6 +35,12 @@ AnalyticShape::SurfacePoint CylinderShape::surface_at(Vec3d p) const {
     return s;
 }
 
+// ∂p/∂v along the axis; n = (x, y, 0) / r, so ∂n/∂u = ∂p/∂u / r and ∂n/∂v = 0 (pbrt-v4's Weingarten
+// result).
+AnalyticShape::SecondPartials CylinderShape::partials_at(const SurfacePoint& s) const {
+    return {Vec3d{0, 0, zmax_ - zmin_}, s.dpdu * (1 / radius_), {}};
+}
+
 // z uniform in [zmin, zmax], φ uniform in [0, φmax]: the area element r dφ dz is constant; the area is
 // φmax r (zmax - zmin) (PBR 4th ed. §6.3.3).
 Vec3d CylinderShape::sample_object(Point2f u) const {

@@ -36,6 +36,14 @@ AnalyticShape::SurfacePoint DiskShape::surface_at(Vec3d p) const {
     return s;
 }
 
+// pbrt-v4: v = (r - ρ) / (r - ri), so ∂p/∂v = (x, y, 0) (ri - r) / ρ; a plane's normal does not change.
+AnalyticShape::SecondPartials DiskShape::partials_at(const SurfacePoint& s) const {
+    double rho = std::sqrt(s.p.x * s.p.x + s.p.y * s.p.y);
+    Vec3d dpdv = rho > 0 ? Vec3d{s.p.x, s.p.y, 0} * ((inner_radius_ - radius_) / rho)
+                         : Vec3d{inner_radius_ - radius_, 0, 0};
+    return {dpdv, {}, {}};
+}
+
 // Uniform over the annular sector: ρ² uniform in [ri², r²], φ uniform in [0, φmax] (the area element is
 // ρ dρ dφ = d(ρ²)/2 dφ). The whole annulus keeps the concentric map's lower distortion, its radius
 // remapped the same way.

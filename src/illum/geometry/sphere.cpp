@@ -53,6 +53,16 @@ AnalyticShape::SurfacePoint SphereShape::surface_at(Vec3d p) const {
     return s;
 }
 
+// pbrt-v4's ∂p/∂v for v = (θ - θ(zmin)) / (θ(zmax) - θ(zmin)); n = p / r, so ∂n/∂u = ∂p/∂u / r and
+// ∂n/∂v = ∂p/∂v / r (what the Weingarten equations give on a sphere).
+AnalyticShape::SecondPartials SphereShape::partials_at(const SurfacePoint& s) const {
+    double rho = std::sqrt(s.p.x * s.p.x + s.p.y * s.p.y), cos_phi = rho > 0 ? s.p.x / rho : 1,
+           sin_phi = rho > 0 ? s.p.y / rho : 0;
+    double sin_theta = std::sqrt(std::max(0.0, 1 - s.n.z * s.n.z));
+    Vec3d dpdv = Vec3d{s.p.z * cos_phi, s.p.z * sin_phi, -radius_ * sin_theta} * (theta_zmax_ - theta_zmin_);
+    return {dpdv, s.dpdu * (1 / radius_), dpdv * (1 / radius_)};
+}
+
 // Archimedes: the area of a sphere between two planes is 2π r h, so z uniform in [zmin, zmax] and φ
 // uniform in [0, φmax] is uniform by area; the area is φmax r (zmax - zmin) (PBR 4th ed. §6.2.3).
 Vec3d SphereShape::sample_object(Point2f u) const {

@@ -6,7 +6,9 @@
 
 #include "illum/geometry/medium_interface.h"
 #include "illum/geometry/ray.h"
+#include "illum/geometry/shading_partials.h"
 #include "illum/math/frame.h"
+#include "illum/math/transform.h"
 #include "illum/texture/texture.h"
 
 namespace illum {
@@ -21,6 +23,15 @@ struct SurfaceHit : TextureEvalContext {
     Vector3f wo;   // towards the ray origin, normalised
     Normal3f ns;   // shading normal, on the same side as n
     Vector3f dpdu; // tangent along u (for anisotropic models), may be zero
+    // The shading partials ∂p/∂v, ∂n/∂u, ∂n/∂v: zero until complete_shading_partials() computes them
+    // (with pbrt-v4's ∂p/∂u in dpdu), which bump and normal mapping do (bsdf/surface_detail.h).
+    Vector3f dpdv;
+    Normal3f dndu, dndv;
+    // Where complete_shading_partials() finds the surface: the shape, the point on it in the shape's terms,
+    // and the placement of the instance the hit is in (null: none).
+    const ShadingPartialsSource* partials_source = nullptr;
+    Point3f local;
+    const Transform* world_from_instance = nullptr;
     const Material* material = nullptr;
     const Light* area_light = nullptr; // the emitter on this surface, if any
     std::uint32_t geom_id = 0, prim_id = 0;
@@ -28,6 +39,20 @@ struct SurfaceHit : TextureEvalContext {
     // `medium`, the medium of the ray that found the hit.
     const MediumInterface* medium_interface = nullptr;
     const Medium* medium = nullptr;
+
+    // Sets dpdu, dpdv, dndu, dndv to the shape's shading partials at the hit, in world space.
+    void complete_shading_partials() {
+        if (!partials_source) return;
+        ShadingPartials s = partials_source->shading_partials(prim_id, local);
+        if (world_from_instance) {
+            const Transform& w = *world_from_instance;
+            s = {w(s.dpdu), w(s.dpdv), w(s.dndu), w(s.dndv)};
+        }
+        dpdu = s.dpdu;
+        dpdv = s.dpdv;
+        dndu = s.dndu;
+        dndv = s.dndv;
+    }
 
     // The shading frame: +z is the shading normal, x follows dpdu.
     Frame shading_frame() const { return Frame::from_xz(dpdu, Vector3f(ns)); }

@@ -1,5 +1,6 @@
 #include "illum/geometry/triangle_mesh.h"
 
+#include "illum/math/frame.h"
 #include "illum/math/warp.h"
 
 namespace illum {
@@ -70,6 +71,64 @@ void TriangleMesh::fill_hit(std::uint32_t tri, float b1, float b2, float t, cons
     } else {
         hit->ns = hit->n;
     }
+    hit->partials_source = this;
+    hit->local = {b1, b2, 0};
+}
+
+ShadingPartials TriangleMesh::shading_partials(std::uint32_t tri, Point3f local) const {
+    float b1 = local.x, b2 = local.y, b0 = 1 - b1 - b2;
+    std::uint32_t i0 = indices[3 * tri], i1 = indices[3 * tri + 1], i2 = indices[3 * tri + 2];
+    Point2f uv0{0, 0}, uv1{1, 0}, uv2{1, 1};
+    if (!uv.empty()) {
+        uv0 = uv[i0];
+        uv1 = uv[i1];
+        uv2 = uv[i2];
+    }
+    // ∂p/∂u, ∂p/∂v solve [duv02; duv12] [∂p/∂u; ∂p/∂v] = [dp02; dp12]; an arbitrary frame around the face
+    // normal when the uv parameterisation is degenerate (pbrt-v4's Triangle).
+    Vector2f duv02 = uv0 - uv2, duv12 = uv1 - uv2;
+    Vector3f dp02 = p[i0] - p[i2], dp12 = p[i1] - p[i2];
+    float det = duv02.x * duv12.y - duv02.y * duv12.x;
+    bool degenerate_uv = !(std::abs(det) >= 1e-9f);
+    ShadingPartials s;
+    bool degenerate = degenerate_uv;
+    if (!degenerate_uv) {
+        float inv = 1 / det;
+        s.dpdu = (dp02 * duv12.y - dp12 * duv02.y) * inv;
+        s.dpdv = (dp12 * duv02.x - dp02 * duv12.x) * inv;
+        degenerate = !is_finite(s.dpdu) || !is_finite(s.dpdv) || length_squared(cross(s.dpdu, s.dpdv)) == 0;
+    }
+    if (degenerate) coordinate_system(Vector3f(face_normals[tri]), &s.dpdu, &s.dpdv);
+    if (n.empty()) return s; // ∂n/∂u = ∂n/∂v = 0
+
+    // With vertex normals: ∂p/∂u made orthogonal to the interpolated normal ns, ∂p/∂v = ns × ∂p/∂u, and
+    // ∂n/∂u, ∂n/∂v from the normals as ∂p/∂u, ∂p/∂v from the points.
+    Normal3f ns = n[i0] * b0 + n[i1] * b1 + n[i2] * b2;
+    float len2 = dot(ns, ns);
+    Vector3f z = len2 > 0 ? Vector3f(ns) * (1 / std::sqrt(len2)) : Vector3f(face_normals[tri]);
+    Vector3f ts = cross(z, s.dpdu);
+    if (length_squared(ts) > 0) {
+        s.dpdu = cross(ts, z);
+        s.dpdv = ts;
+    } else {
+        coordinate_system(z, &s.dpdu, &s.dpdv);
+    }
+    Vector3f dn1 = Vector3f(n[i0]) - Vector3f(n[i2]), dn2 = Vector3f(n[i1]) - Vector3f(n[i2]);
+    if (!degenerate_uv) {
+        float inv = 1 / det;
+        s.dndu = Normal3f((dn1 * duv12.y - dn2 * duv02.y) * inv);
+        s.dndv = Normal3f((dn2 * duv02.x - dn1 * duv12.x) * inv);
+    } else {
+        // pbrt-v4: the derivatives in an arbitrary frame around the normals' cross product.
+        Vector3f dn = cross(Vector3f(n[i2]) - Vector3f(n[i0]), Vector3f(n[i1]) - Vector3f(n[i0]));
+        if (length_squared(dn) > 0) {
+            Vector3f dnu, dnv;
+            coordinate_system(normalize(dn), &dnu, &dnv);
+            s.dndu = Normal3f(dnu);
+            s.dndv = Normal3f(dnv);
+        }
+    }
+    return s;
 }
 
 TriangleShape::TriangleShape(const TriangleMesh* mesh, std::uint32_t index) : mesh_(mesh), index_(index) {

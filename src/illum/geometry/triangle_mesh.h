@@ -11,7 +11,7 @@
 
 namespace illum {
 
-struct TriangleMesh {
+struct TriangleMesh final : ShadingPartialsSource {
     std::vector<Point3f> p;             // world space
     std::vector<Normal3f> n;            // per vertex, world space; empty when the mesh gives none
     std::vector<Point2f> uv;            // per vertex; empty when none
@@ -34,6 +34,8 @@ struct TriangleMesh {
     void finalize();
     // Fills a hit from Embree's barycentrics (b1, b2) on triangle tri (p = b0 p0 + b1 p1 + b2 p2).
     void fill_hit(std::uint32_t tri, float b1, float b2, float t, const Ray& ray, SurfaceHit* hit) const;
+    // pbrt-v4's Triangle shading partials at barycentrics (local.x, local.y) = (b1, b2) of triangle tri.
+    ShadingPartials shading_partials(std::uint32_t tri, Point3f local) const override;
     // The geometric normal of triangle tri, oriented by the mesh's rules.
     Normal3f geometric_normal(std::size_t tri) const { return face_normals[tri]; }
 };

@@ -21,7 +21,11 @@ public:
         for (int i = 0; i < 64; ++i) {
             SurfaceHit hit;
             if (!intersect(ray, &hit, tc)) return {};
-            if (pass_ == Pass::Normal) return {hit.ns.x, hit.ns.y, hit.ns.z};
+            if (pass_ == Pass::Normal) {
+                // The shading normal the BSDF sees: with the material's normal or bump map applied.
+                if (hit.material && hit.material->has_surface_detail) apply_surface_detail(hit);
+                return {hit.ns.x, hit.ns.y, hit.ns.z};
+            }
             if (!hit.material) {
                 ray = hit.spawn_ray(ray.d);
                 continue;

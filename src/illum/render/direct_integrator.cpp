@@ -59,7 +59,7 @@ Radiance3 DirectIntegrator::radiance(Ray ray, ThreadContext& tc) const {
             break;
         }
         if (hit.area_light) l += hit.area_light->radiance(hit, hit.wo, tc.lambda) * beta;
-        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.lambda, tc.arena) : BSDF();
+        BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
         if (!bsdf) {
             ray = hit.spawn_ray(ray.d);
             continue;

@@ -190,7 +190,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
         }
         if (!found) break;
         tc.arena.reset();
-        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.lambda, tc.arena) : BSDF();
+        BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
         if (!bsdf) {
             ray = hit.spawn_ray(ray.d); // an interface without material: no vertex
             ++crossings;

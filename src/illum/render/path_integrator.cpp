@@ -57,7 +57,7 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
 
         prev_bsdf = BSDF();
         tc.arena.reset(); // the previous vertex's BSDF is no longer needed
-        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.lambda, tc.arena) : BSDF();
+        BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
         if (!bsdf) {
             // A pure interface (no material): the path continues straight through, no scattering event. Like
             // a specular bounce, emission found beyond it is counted in full: next-event estimation from the

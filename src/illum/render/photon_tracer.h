@@ -81,7 +81,7 @@ std::uint64_t PhotonTracer::trace(std::uint64_t global_index, SampledWavelengths
         if (!scene_.intersect(ray, &hit)) break;
         visit(PhotonArrival{hit, -ray.d, beta, depth, lambda});
         arena.reset();
-        BSDF bsdf = hit.material ? hit.material->bsdf(hit, lambda, arena) : BSDF();
+        BSDF bsdf = surface_bsdf(hit, lambda, arena);
         if (!bsdf) {
             // A pure interface: the photon passes; the hit does not count against the depth.
             ray = hit.spawn_ray(ray.d);

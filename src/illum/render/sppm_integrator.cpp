@@ -260,7 +260,7 @@ void SppmRender::trace_camera_path(int x, int y, int iteration, const SampledWav
             }
         }
         t.arena.reset();
-        BSDF bsdf = hit.material ? hit.material->bsdf(hit, lambda, t.arena) : BSDF();
+        BSDF bsdf = surface_bsdf(hit, lambda, t.arena);
         if (!bsdf) {
             ray = hit.spawn_ray(ray.d); // a pure interface
             continue;

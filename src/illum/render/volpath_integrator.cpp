@@ -285,7 +285,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
             add_emission(hit.area_light->radiance(hit, hit.wo, tc.lambda).s, hit.area_light, &hit);
 
         tc.arena.reset();
-        BSDF bsdf = hit.material ? hit.material->bsdf(hit, tc.lambda, tc.arena) : BSDF();
+        BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
         if (!bsdf) {
             // A boundary between media with no surface: the path goes on unchanged.
             ray = hit.spawn_ray(ray.d);

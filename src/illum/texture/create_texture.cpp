@@ -30,11 +30,14 @@ TextureMapping2D mapping(const TextureDesc& t) {
     if (m == "spherical") return TextureMapping2D::spherical(texture_from_world);
     if (m == "cylindrical") return TextureMapping2D::cylindrical(texture_from_world);
     if (m == "planar")
-        return TextureMapping2D::planar(texture_from_world, t.params.get_vector3("v1").value_or(Vector3f(1, 0, 0)),
+        return TextureMapping2D::planar(texture_from_world,
+                                        t.params.get_vector3("v1").value_or(Vector3f(1, 0, 0)),
                                         t.params.get_vector3("v2").value_or(Vector3f(0, 1, 0)),
                                         t.params.get_float("udelta", 0), t.params.get_float("vdelta", 0));
-    throw Error(t.params.find("mapping")->loc, fmt::format("unknown texture mapping \"{}\" (use uv, spherical, "
-                                                           "cylindrical or planar)", m));
+    throw Error(t.params.find("mapping")->loc,
+                fmt::format("unknown texture mapping \"{}\" (use uv, spherical, "
+                            "cylindrical or planar)",
+                            m));
 }
 
 bool is_eight_bit(const std::string& path) {
@@ -66,16 +69,24 @@ std::shared_ptr<const Image> load_image(const TextureDesc& t, const std::string&
     std::string path = t.params.get_string("filename", "");
     if (path.empty()) throw Error(t.loc, "imagemap needs \"string filename\"");
     float gamma = is_eight_bit(path) ? encoding_gamma(t, encoding) : 0;
+    return read_encoded_image(path, encoding, gamma, f->loc, params);
+}
+
+} // namespace
+
+std::shared_ptr<const Image> read_encoded_image(const std::string& path, const std::string& encoding,
+                                                float gamma, const SourceLocation& loc,
+                                                TextureParams& params) {
     std::string key = path + "|" + encoding;
     if (auto it = params.images().find(key); it != params.images().end()) return it->second;
     Image img;
     try {
         img = read_image(path);
     } catch (const Error& err) {
-        params.diagnostics().missing_file(f->loc, err.what());
+        params.diagnostics().missing_file(loc, err.what());
         return nullptr;
     }
-    if (gamma > 0) { // undo read_image's sRGB decoding, then apply the gamma asked for
+    if (gamma > 0 && is_eight_bit(path)) { // undo read_image's sRGB decoding, then apply the gamma asked for
         for (std::size_t i = 0; i < img.pixel_count(); ++i) {
             Color3& c = img.data()[i];
             for (int k = 0; k < 3; ++k) {
@@ -89,8 +100,6 @@ std::shared_ptr<const Image> load_image(const TextureDesc& t, const std::string&
     params.images()[key] = ptr;
     return ptr;
 }
-
-} // namespace
 
 void create_texture(const TextureDesc& t, TextureParams& params) {
     bool is_float = t.value_type == "float";
@@ -145,16 +154,19 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
     } else if (t.type == "bilerp") {
         TextureMapping2D m = mapping(t);
         if (is_float)
-            ft = params.own(std::make_unique<BilerpTex<FloatTexture, float>>(f("v00", 0), f("v01", 1), f("v10", 0),
-                                                                             f("v11", 1), m));
+            ft = params.own(std::make_unique<BilerpTex<FloatTexture, float>>(f("v00", 0), f("v01", 1),
+                                                                             f("v10", 0), f("v11", 1), m));
         else
             ct = params.own(std::make_unique<BilerpTex<ColorTexture, Color3>>(
-                c("v00", Color3(0.0f)), c("v01", Color3(1.0f)), c("v10", Color3(0.0f)), c("v11", Color3(1.0f)), m));
+                c("v00", Color3(0.0f)), c("v01", Color3(1.0f)), c("v10", Color3(0.0f)),
+                c("v11", Color3(1.0f)), m));
     } else if (t.type == "directionmix") {
         // pbrt-v4: dir in the texture's space, taken to render space and normalised.
-        Vector3f dir = normalize(t.world_from_texture(t.params.get_vector3("dir").value_or(Vector3f(0, 1, 0))));
+        Vector3f dir =
+            normalize(t.world_from_texture(t.params.get_vector3("dir").value_or(Vector3f(0, 1, 0))));
         if (is_float)
-            ft = params.own(std::make_unique<DirectionMixTex<FloatTexture, float>>(f("tex1", 0), f("tex2", 1), dir));
+            ft = params.own(
+                std::make_unique<DirectionMixTex<FloatTexture, float>>(f("tex1", 0), f("tex2", 1), dir));
         else
             ct = params.own(std::make_unique<DirectionMixTex<ColorTexture, Color3>>(
                 c("tex1", Color3(0.0f)), c("tex2", Color3(1.0f)), dir));
@@ -198,7 +210,8 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
         int octaves = t.params.get_int("octaves", 8);
         float omega = t.params.get_float("roughness", 0.5f);
         if (octaves < 0 || octaves > 64)
-            throw Error(t.params.find("octaves")->loc, fmt::format("octaves must be in [0, 64], not {}", octaves));
+            throw Error(t.params.find("octaves")->loc,
+                        fmt::format("octaves must be in [0, 64], not {}", octaves));
         if (t.type == "fbm")
             ft = params.own(std::make_unique<FbmTexture>(m, octaves, omega));
         else if (t.type == "wrinkled")
@@ -214,7 +227,8 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
         // space between the dots. Kept, so that scenes render as in pbrt-v4.
         TextureMapping2D m = mapping(t);
         if (is_float)
-            ft = params.own(std::make_unique<DotsTex<FloatTexture, float>>(f("outside", 0), f("inside", 1), m));
+            ft = params.own(
+                std::make_unique<DotsTex<FloatTexture, float>>(f("outside", 0), f("inside", 1), m));
         else
             ct = params.own(std::make_unique<DotsTex<ColorTexture, Color3>>(c("outside", Color3(0.0f)),
                                                                             c("inside", Color3(1.0f)), m));

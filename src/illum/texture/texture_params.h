@@ -58,6 +58,14 @@ private:
     std::unordered_map<std::string, std::shared_ptr<const Image>> images_;
 };
 
+// An image file decoded as `encoding` says, read once per (file, encoding) into params.images(): an 8-bit
+// file's sRGB values are undone and raised to `gamma` when gamma > 0 (1: "linear", the raw values v/255);
+// float files are linear as they are. nullptr when the file cannot be read, which is recorded in the
+// diagnostics at `loc`.
+std::shared_ptr<const Image> read_encoded_image(const std::string& path, const std::string& encoding,
+                                                float gamma, const SourceLocation& loc,
+                                                TextureParams& params);
+
 // The Texture directive: a float or spectrum texture of any pbrt-v4 type, defined under its name in
 // `params`. Image files are read once per (file, encoding); an unreadable one is recorded in the
 // diagnostics (every missing file of a scene is reported together) and replaced by a constant.
