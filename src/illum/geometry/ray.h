@@ -25,6 +25,9 @@ struct Ray {
     Vector3f d;
     float tmax = kInfinity;
     const Medium* medium = nullptr; // the participating medium the ray travels in (none: vacuum)
+    // The instant the ray samples (motion blur): drawn in the camera's shutter interval for a camera
+    // sample; every ray of its path carries it.
+    float time = 0;
 
     Point3f operator()(float t) const { return o + d * t; }
 };

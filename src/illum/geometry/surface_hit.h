@@ -28,6 +28,7 @@ struct SurfaceHit : TextureEvalContext {
     // `medium`, the medium of the ray that found the hit.
     const MediumInterface* medium_interface = nullptr;
     const Medium* medium = nullptr;
+    float time = 0; // the time of the ray that found the hit; rays spawned here keep it
 
     // The shading frame: +z is the shading normal, x follows dpdu.
     Frame shading_frame() const { return Frame::from_xz(dpdu, Vector3f(ns)); }
@@ -41,11 +42,13 @@ struct SurfaceHit : TextureEvalContext {
     Ray spawn_ray(Vector3f d) const {
         Ray r = illum::spawn_ray(p, p_error, n, d);
         r.medium = medium_for(d);
+        r.time = time;
         return r;
     }
     Ray spawn_ray_to(Point3f target) const {
         Ray r = illum::spawn_ray_to(p, p_error, n, target);
         r.medium = medium_for(target - p);
+        r.time = time;
         return r;
     }
 };

@@ -218,7 +218,7 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
                         // reverse density is the same number).
                         pdf_fwd = phase_pdf;
                         prev.pdf_rev = convert_density(v, phase_pdf, prev);
-                        ray = Ray{p, wi, kInfinity, medium};
+                        ray = Ray{p, wi, kInfinity, medium, ray.time};
                         scattered = true;
                         return false;
                     }
@@ -319,6 +319,7 @@ SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVerte
             ray = Ray{a.p, q - a.p, 1 - 1e-4f, a.medium_towards(b.p)};
         }
     }
+    ray.time = ctx.time;
     SampledSpectrum r_u(1.0f), r_l(1.0f);
     SampledSpectrum t =
         shadow_transmittance(ctx.scene, ray, target, ch, ctx.rng, ctx.tc.lambda, &r_u, &r_l, &ctx.tc.rays);
