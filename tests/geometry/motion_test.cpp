@@ -66,7 +66,16 @@ TEST(Motion, RotatingInstanceTurnsAtConstantSpeed) {
     double cx = 3 * (1 - t), cy = 3 * t;
     // Along the long axis at 1.9 from the centre: inside the ellipsoid only if it points at 30°.
     double r = 1.9;
-    EXPECT_LT(drop(*acc, float(cx + r * std::cos(a)), float(cy + r * std::sin(a)), float(t)), 10);
+    float x = float(cx + r * std::cos(a)), y = float(cy + r * std::sin(a));
+    SurfaceHit hit;
+    float d = drop(*acc, x, y, float(t), &hit);
+    ASSERT_LT(d, 10);
+    // The hit is carried back to the world by the transform of that instant: it lies on the ray.
+    EXPECT_NEAR(hit.p.x, x, 1e-4);
+    EXPECT_NEAR(hit.p.y, y, 1e-4);
+    EXPECT_NEAR(hit.p.z, 10 - d, 1e-4);
+    // On the ellipsoid x²/4 + y²/0.25 + z² = 1 in its own frame, turned by 30°: z = √(1 - 0.95²).
+    EXPECT_NEAR(hit.p.z, std::sqrt(1 - 0.95 * 0.95), 1e-3);
     // At 40° or 20° the same distance is outside (the half-width there is about 0.5 / sin(10°) ... < 1.9).
     for (double off : {-10.0, 10.0}) {
         double b = a + off * kPiD / 180;

@@ -139,6 +139,7 @@ Accelerator::Accelerator() {
     scene_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
     rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+    inv_shutter_ = 0; // nothing moves yet (add_moving_instance)
 }
 
 Accelerator::~Accelerator() {
@@ -203,10 +204,12 @@ void Accelerator::add_instance(std::uint32_t prototype, const Transform& world_f
 void Accelerator::set_shutter(float open, float close) {
     shutter_open_ = open;
     shutter_close_ = close;
-    inv_shutter_ = close > open ? 1 / (close - open) : 0;
+    inv_shutter_ = 0; // until something moves
 }
 
 float Accelerator::embree_time(float time) const {
+    // Without moving geometry Embree ignores the time: a still scene skips the arithmetic.
+    if (inv_shutter_ == 0) return 0;
     return std::clamp((time - shutter_open_) * inv_shutter_, 0.0f, 1.0f);
 }
 
@@ -214,6 +217,7 @@ void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTra
     const Prototype& proto = *prototypes_.at(prototype);
     if (proto.records.empty()) return;
     std::vector<TransformComponents> steps = motion_steps(world_from_instance, shutter_open_, shutter_close_);
+    if (shutter_close_ > shutter_open_) inv_shutter_ = 1 / (shutter_close_ - shutter_open_);
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(geom, proto.scene);
     rtcSetGeometryTimeStepCount(geom, unsigned(steps.size()));
@@ -373,7 +377,7 @@ bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
     }
     const Transform& w = inst.moving ? moved : inst.world_from_instance;
     Transform instance_from_world = w.inverse();
-    Ray local{instance_from_world(ray.o), instance_from_world(ray.d), ray.tmax, ray.medium, ray.time};
+    Ray local{instance_from_world(ray.o), instance_from_world(ray.d), ray.tmax, ray.time, ray.medium};
     fill_hit(prototypes_[inst.prototype]->records[rh.hit.geomID], rh, local, hit);
     // The point's error bound through the affine map (after PBR 4th ed. §6.8.6): each coordinate gets
     // |M| (γ3 |p| + (1 + γ3) err) + γ3 |translation|.

@@ -81,7 +81,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
     auto connect = [&](const SurfaceHit* hit, Point3f from, const Medium* medium, const CameraWiSample& cs,
                        SampledSpectrum value) {
         Ray shadow =
-            hit ? hit->spawn_ray_to(cs.p_lens) : Ray{from, cs.p_lens - from, 1 - 1e-4f, medium, time};
+            hit ? hit->spawn_ray_to(cs.p_lens) : Ray{from, cs.p_lens - from, 1 - 1e-4f, time, medium};
         SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
         SampledSpectrum t = shadow_transmittance(scene_, shadow, ShadowTarget{cs.p_lens, {}, {}, false, {}},
                                                  ch, rng, tc.lambda, &r_u_t, &r_l_t, &tc.rays);
@@ -165,7 +165,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
                             terminated = true;
                             return false;
                         }
-                        ray = Ray{p, wi, kInfinity, medium, ray.time};
+                        ray = Ray{p, wi, kInfinity, ray.time, medium};
                         scattered = true;
                         return false;
                     }

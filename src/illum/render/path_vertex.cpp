@@ -218,7 +218,7 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
                         // reverse density is the same number).
                         pdf_fwd = phase_pdf;
                         prev.pdf_rev = convert_density(v, phase_pdf, prev);
-                        ray = Ray{p, wi, kInfinity, medium, ray.time};
+                        ray = Ray{p, wi, kInfinity, ray.time, medium};
                         scattered = true;
                         return false;
                     }
@@ -304,7 +304,7 @@ SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVerte
         if (a.type == VertexType::Surface)
             ray = a.hit.spawn_ray(w);
         else
-            ray = Ray{a.p, w, kInfinity, a.medium_towards(b.p)};
+            ray = Ray{a.p, w, kInfinity, ctx.time, a.medium_towards(b.p)};
     } else {
         target = ShadowTarget{b.p, b.p_error, b.ng, false, {}};
         if (a.type == VertexType::Surface) {
@@ -316,7 +316,7 @@ SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVerte
             }
         } else {
             Point3f q = b.on_surface() ? offset_ray_origin(b.p, b.p_error, b.ng, a.p - b.p) : b.p;
-            ray = Ray{a.p, q - a.p, 1 - 1e-4f, a.medium_towards(b.p)};
+            ray = Ray{a.p, q - a.p, 1 - 1e-4f, ctx.time, a.medium_towards(b.p)};
         }
     }
     ray.time = ctx.time;

@@ -59,13 +59,13 @@ SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path
         f_hat = SampledSpectrum(p);
         scatter_pdf = p;
         if (ls->at_infinity)
-            shadow = Ray{v.p, ls->wi, kInfinity, v.medium};
+            shadow = Ray{v.p, ls->wi, kInfinity, path.time, v.medium};
         else if (ls->n_light == Normal3f{})
-            shadow = Ray{v.p, ls->p_light - v.p, 1 - 1e-4f, v.medium};
+            shadow = Ray{v.p, ls->p_light - v.p, 1 - 1e-4f, path.time, v.medium};
         else {
             Point3f target =
                 offset_ray_origin(ls->p_light, ls->p_light_error, ls->n_light, v.p - ls->p_light);
-            shadow = Ray{v.p, target - v.p, 1 - 1e-4f, v.medium};
+            shadow = Ray{v.p, target - v.p, 1 - 1e-4f, path.time, v.medium};
         }
     }
 
@@ -118,7 +118,7 @@ SampledSpectrum VolPathIntegrator::sample_equiangular(Segment& seg, const Medium
     SampledSpectrum t_cam = exp(-(mp.sigma_a + mp.sigma_s) * t); // exact: the medium is homogeneous
     SampledSpectrum p_free_flight = mp.sigma_s * t_cam;
     float phase = mp.phase.p(dot(seg.d, ls->wi));
-    Ray shadow{x, ls->p_light - x, 1 - 1e-4f, &medium, path.time};
+    Ray shadow{x, ls->p_light - x, 1 - 1e-4f, path.time, &medium};
     SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
     ShadowTarget target{ls->p_light, ls->p_light_error, ls->n_light, false, ls->wi};
     SampledSpectrum t_ray = shadow_transmittance(scene_, shadow, target, path.channel, path.rng, tc.lambda,
@@ -248,7 +248,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
                         // β *= p / pdf = 1 for the exactly sampled Henyey-Greenstein.
                         r_l = r_u / phase_pdf;
                         prev_ctx = LightSampleContext(p, {}, {});
-                        ray = Ray{p, wi, kInfinity, medium, ray.time};
+                        ray = Ray{p, wi, kInfinity, ray.time, medium};
                         specular_bounce = false;
                         scattered = true;
                         return false;
