@@ -126,19 +126,21 @@ TEST_F(Cli, SceneWithoutWorldIsAnError) {
     EXPECT_FALSE(fs::exists(dir_ / "x.exr"));
 }
 
-// The parser's warnings (here: media) are errors under --strict too, not only the builder's.
+// The parser's warnings (here: a moving light, which pbrt-v4 does not move either) are errors under
+// --strict too, not only the builder's.
 TEST_F(Cli, StrictRefusesParserWarnings) {
     write_text(dir_ / "blur.pbrt", "Film \"rgb\" \"integer xresolution\" [8] \"integer yresolution\" [8]\n"
-                                   "TransformTimes 0 1\n"
-                                   "WorldBegin\nShape \"sphere\"\n");
+                                   "WorldBegin\nActiveTransform EndTime\nTranslate 1 0 0\n"
+                                   "LightSource \"point\"\nShape \"sphere\"\n");
     CliRun r = illum("render blur.pbrt --spp 1 -o u.exr", dir_);
     EXPECT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.err.find("warning: blur.pbrt:2:1: motion blur is not supported"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("warning: blur.pbrt:5:1: a moving light is not supported"), std::string::npos)
+        << r.err;
     expect_error(illum("render blur.pbrt --spp 1 --strict -o v.exr", dir_),
-                 "error: blur.pbrt:2:1: motion blur is not supported");
+                 "error: blur.pbrt:5:1: a moving light is not supported");
     EXPECT_FALSE(fs::exists(dir_ / "v.exr"));
     EXPECT_EQ(illum("info blur.pbrt", dir_).exit_code, 0);
-    expect_error(illum("info blur.pbrt --strict", dir_), "error: blur.pbrt:2:1: motion blur");
+    expect_error(illum("info blur.pbrt --strict", dir_), "error: blur.pbrt:5:1: a moving light");
 }
 
 // Media: `illum info` lists each medium and the shapes that bound it; a medium that was never made and a

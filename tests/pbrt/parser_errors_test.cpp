@@ -69,6 +69,16 @@ const Case kCases[] = {
      "does not match the AttributeBegin at bad.pbrt:2:1"},
     {"WorldBegin twice", "WorldBegin\nWorldBegin", "bad.pbrt:2:1", "WorldBegin appears twice"},
     {"Shape before WorldBegin", "Shape \"sphere\"", "bad.pbrt:1:1", "only allowed after WorldBegin"},
+    {"TransformTimes ending before they start", "TransformTimes 1 0.5\nWorldBegin", "bad.pbrt:1:1",
+     "TransformTimes: the end time 0.5 is before the start time 1"},
+    {"TransformTimes in the world", "WorldBegin\nTransformTimes 0 1", "bad.pbrt:2:1",
+     "only allowed before WorldBegin"},
+    {"ActiveTransform with a bad keyword", "ActiveTransform Sometimes\nWorldBegin", "bad.pbrt:1:17",
+     "ActiveTransform expects All, StartTime or EndTime, found Sometimes"},
+    {"a moving projective transform",
+     "ActiveTransform EndTime\nTransform [1 0 0 0 0 1 0 0 0 0 1 1 0 0 0 1]\n"
+     "ActiveTransform All\nCamera \"perspective\"\nWorldBegin",
+     "bad.pbrt:4:1", "a moving transform must be affine"},
     {"Camera after WorldBegin", "WorldBegin\nCamera \"perspective\"", "bad.pbrt:2:1",
      "only allowed before WorldBegin"},
     {"Film after WorldBegin", "WorldBegin\nFilm \"rgb\"", "bad.pbrt:2:1", "only allowed before WorldBegin"},
@@ -173,7 +183,8 @@ TEST(PbrtParserErrors, WorldBeginMayComeFromAnIncludedFile) {
 // --strict: the first of the parser's warnings is an error at its position; without it, a warning.
 TEST(PbrtParserErrors, StrictTurnsParserWarningsIntoErrors) {
     const char* cases[][3] = {
-        {"ActiveTransform EndTime\nTranslate 1 0 0\nWorldBegin\n", "bad.pbrt:1:1", "motion blur"},
+        {"WorldBegin\nActiveTransform EndTime\nTranslate 1 0 0\nLightSource \"point\"\n", "bad.pbrt:4:1",
+         "a moving light is not supported"},
         {"WorldBegin\nTransformBegin\nTransformEnd\n", "bad.pbrt:2:1", "TransformBegin/TransformEnd"},
         {"WorldBegin\nWorldEnd\n", "bad.pbrt:2:1", "WorldEnd"},
     };

@@ -366,7 +366,7 @@ TEST(PbrtParser, ObjectInstances) {
     EXPECT_NE(s.warnings[0].find("area lights"), std::string::npos);
 }
 
-TEST(PbrtParser, MediaAreRecordedMotionWarns) {
+TEST(PbrtParser, MediaAreRecordedTheCameraMoves) {
     SceneDesc s = parse(R"(
         MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_a" [ 1 1 1 ]
         MediumInterface "" "fog"
@@ -382,9 +382,53 @@ TEST(PbrtParser, MediaAreRecordedMotionWarns) {
     EXPECT_EQ(s.media.at("fog").type, "homogeneous");
     EXPECT_FALSE(s.media.at("fog").params.has("type"));
     EXPECT_EQ(s.camera.medium, "fog");
-    EXPECT_TRUE(s.camera.camera_from_world.is_identity()); // end-time transforms are ignored
-    ASSERT_EQ(s.warnings.size(), 1u);                      // motion blur (media are rendered)
-    EXPECT_NE(s.warnings[0].find("motion blur"), std::string::npos);
+    // The camera moves: its start transform is the identity, its end one translates by 100.
+    EXPECT_TRUE(s.camera.camera_from_world.is_identity());
+    ASSERT_TRUE(s.camera.motion.animated);
+    expect_point_near(s.camera.motion.end(Point3f(0, 0, 0)), Point3f(100, 0, 0));
+    EXPECT_EQ(s.camera.motion.start_time, 0);
+    EXPECT_EQ(s.camera.motion.end_time, 1);
+    EXPECT_TRUE(s.warnings.empty()); // the media made before the motion do not move
+}
+
+// pbrt-v4's two current transforms: ActiveTransform picks which of them the transform directives change,
+// TransformTimes gives their times, and a shape, instance or camera whose two transforms differ moves.
+TEST(PbrtParser, ActiveTransformAndTransformTimes) {
+    SceneDesc s = parse(R"(
+        TransformTimes 0.25 2
+        WorldBegin
+        Translate 1 0 0
+        AttributeBegin
+          ActiveTransform StartTime
+          Translate 0 1 0
+          ActiveTransform EndTime
+          Translate 0 0 5
+          Shape "sphere"
+        AttributeEnd
+        Shape "sphere"
+        AttributeBegin
+          ActiveTransform EndTime
+          Rotate 90 0 0 1
+          ObjectInstance "thing"
+        AttributeEnd
+        ObjectBegin "thing"
+          Shape "sphere"
+        ObjectEnd
+    )");
+    ASSERT_EQ(s.shapes.size(), 2u);
+    const ShapeDesc& moving = s.shapes[0];
+    expect_point_near(moving.world_from_object(Point3f(0, 0, 0)), Point3f(1, 1, 0));
+    ASSERT_TRUE(moving.motion.animated);
+    expect_point_near(moving.motion.end(Point3f(0, 0, 0)), Point3f(1, 0, 5));
+    EXPECT_EQ(moving.motion.start_time, 0.25);
+    EXPECT_EQ(moving.motion.end_time, 2);
+    // AttributeEnd restored both transforms and ActiveTransform All.
+    EXPECT_FALSE(s.shapes[1].motion.animated);
+    expect_point_near(s.shapes[1].world_from_object(Point3f(0, 0, 0)), Point3f(1, 0, 0));
+    ASSERT_EQ(s.instance_uses.size(), 1u);
+    ASSERT_TRUE(s.instance_uses[0].motion.animated);
+    expect_point_near(s.instance_uses[0].motion.end(Point3f(1, 0, 0)), Point3f(1, 1, 0));
+    EXPECT_TRUE(s.warnings.empty());
 }
 
 // A scene of nothing but its world (no options, no shapes) is valid: every option has its default.

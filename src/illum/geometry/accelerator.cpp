@@ -1,9 +1,11 @@
 #include "illum/geometry/accelerator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
 
+#include "illum/geometry/motion_steps.h"
 #include "illum/geometry/sphere.h"
 #include "illum/math/rng.h"
 #include "illum/util/error.h"
@@ -107,7 +109,7 @@ bool traceable(const RTCRay& r) {
     return !std::isnan(r.tfar);
 }
 
-RTCRay to_embree(const Ray& ray) {
+RTCRay to_embree(const Ray& ray, float time) {
     RTCRay r;
     r.org_x = ray.o.x;
     r.org_y = ray.o.y;
@@ -118,7 +120,7 @@ RTCRay to_embree(const Ray& ray) {
     r.dir_x = ray.d.x;
     r.dir_y = ray.d.y;
     r.dir_z = ray.d.z;
-    r.time = 0;
+    r.time = time;
     r.tfar = ray.tmax;
     r.mask = 0xffffffffu;
     r.id = 0;
@@ -137,6 +139,7 @@ Accelerator::Accelerator() {
     scene_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
     rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+    inv_shutter_ = 0; // nothing moves yet (add_moving_instance)
 }
 
 Accelerator::~Accelerator() {
@@ -194,6 +197,59 @@ void Accelerator::add_instance(std::uint32_t prototype, const Transform& world_f
     r.world_from_instance = world_from_instance;
     Prototype* saved = building_;
     building_ = nullptr; // instances live in the world scene
+    attach(geom, std::move(r));
+    building_ = saved;
+}
+
+void Accelerator::set_shutter(float open, float close) {
+    shutter_open_ = open;
+    shutter_close_ = close;
+    inv_shutter_ = 0; // until something moves
+}
+
+float Accelerator::embree_time(float time) const {
+    // Without moving geometry Embree ignores the time: a still scene skips the arithmetic.
+    if (inv_shutter_ == 0) return 0;
+    return std::clamp((time - shutter_open_) * inv_shutter_, 0.0f, 1.0f);
+}
+
+void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTransform& world_from_instance) {
+    const Prototype& proto = *prototypes_.at(prototype);
+    if (proto.records.empty()) return;
+    std::vector<TransformComponents> steps = motion_steps(world_from_instance, shutter_open_, shutter_close_);
+    if (shutter_close_ > shutter_open_) inv_shutter_ = 1 / (shutter_close_ - shutter_open_);
+    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geom, proto.scene);
+    rtcSetGeometryTimeStepCount(geom, unsigned(steps.size()));
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const TransformComponents& c = steps[i];
+        RTCQuaternionDecomposition qd;
+        rtcInitQuaternionDecomposition(&qd);
+        const Matrix3d& u = c.scale;
+        rtcQuaternionDecompositionSetScale(&qd, float(u[0]), float(u[4]), float(u[8]));
+        rtcQuaternionDecompositionSetSkew(&qd, float(u[1]), float(u[2]), float(u[5]));
+        rtcQuaternionDecompositionSetQuaternion(&qd, float(c.rotation.w), float(c.rotation.x),
+                                                float(c.rotation.y), float(c.rotation.z));
+        rtcQuaternionDecompositionSetTranslation(&qd, float(c.translation[0]), float(c.translation[1]),
+                                                 float(c.translation[2]));
+        rtcSetGeometryTransformQuaternion(geom, unsigned(i), &qd);
+    }
+    // The world bounds (for the lights that need them) from the corners along the motion.
+    for (int i = 0; i <= 64; ++i) {
+        Transform w = world_from_instance.interpolate(
+            world_from_instance.start_time() +
+            (world_from_instance.end_time() - world_from_instance.start_time()) * i / 64);
+        for (float x : {proto.bounds.lo.x, proto.bounds.hi.x})
+            for (float y : {proto.bounds.lo.y, proto.bounds.hi.y})
+                for (float z : {proto.bounds.lo.z, proto.bounds.hi.z}) bounds_.extend(w(Point3f{x, y, z}));
+    }
+    Record r;
+    r.kind = Kind::Instance;
+    r.prototype = prototype;
+    r.world_from_instance = world_from_instance.start();
+    r.moving = geom;
+    Prototype* saved = building_;
+    building_ = nullptr;
     attach(geom, std::move(r));
     building_ = saved;
 }
@@ -293,7 +349,7 @@ bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     RTCRayHit rh;
-    rh.ray = to_embree(ray);
+    rh.ray = to_embree(ray, embree_time(ray.time));
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -307,9 +363,21 @@ bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
     }
     // A hit inside an instance: fill it in instance space, then carry it to the world.
     const Record& inst = records_[rh.hit.instID[0]];
-    const Transform& w = inst.world_from_instance;
+    Transform moved;
+    if (inst.moving) {
+        // The transform Embree traversed with at this time, so the hit agrees with its traversal.
+        float xfm[12];
+        rtcGetGeometryTransform(inst.moving, rh.ray.time, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, xfm);
+        Matrix4 m = Matrix4::identity();
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 4; ++c) m(r, c) = xfm[4 * r + c];
+        auto inv = inverse(m);
+        if (!inv) return false; // a scale passing through zero: nothing to see at this instant
+        moved = Transform(m, *inv);
+    }
+    const Transform& w = inst.moving ? moved : inst.world_from_instance;
     Transform instance_from_world = w.inverse();
-    Ray local{instance_from_world(ray.o), instance_from_world(ray.d), ray.tmax, ray.medium};
+    Ray local{instance_from_world(ray.o), instance_from_world(ray.d), ray.tmax, ray.time, ray.medium};
     fill_hit(prototypes_[inst.prototype]->records[rh.hit.geomID], rh, local, hit);
     // The point's error bound through the affine map (after PBR 4th ed. §6.8.6): each coordinate gets
     // |M| (γ3 |p| + (1 + γ3) err) + γ3 |translation|.
@@ -351,6 +419,7 @@ void Accelerator::fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ra
     hit->medium_interface = rec.medium_interface;
     hit->medium = ray.medium;
     hit->world_from_instance = nullptr; // intersect() sets it for a hit in an instance
+    hit->time = ray.time;
     hit->area_light = rec.lights.empty() ? nullptr : rec.lights[rec.kind == Kind::Mesh ? rh.hit.primID : 0];
 }
 
@@ -358,7 +427,7 @@ float Accelerator::intersect_distance(const Ray& ray) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     RTCRayHit rh;
-    rh.ray = to_embree(ray);
+    rh.ray = to_embree(ray, embree_time(ray.time));
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     if (!traceable(rh.ray)) return kInfinity;
@@ -369,7 +438,7 @@ float Accelerator::intersect_distance(const Ray& ray) const {
 bool Accelerator::occluded(const Ray& ray) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
-    RTCRay r = to_embree(ray);
+    RTCRay r = to_embree(ray, embree_time(ray.time));
     if (!traceable(r)) return false;
     rtcOccluded1(scene_, &ctx, &r);
     return r.tfar < 0 && std::isinf(r.tfar);

@@ -13,6 +13,7 @@
 #include "illum/geometry/analytic_shape.h"
 #include "illum/geometry/surface_hit.h"
 #include "illum/geometry/triangle_mesh.h"
+#include "illum/math/animated_transform.h"
 #include "illum/texture/texture.h"
 
 namespace illum {
@@ -45,6 +46,12 @@ public:
     std::uint32_t begin_prototype();
     void end_prototype();
     void add_instance(std::uint32_t prototype, const Transform& world_from_instance);
+    // Motion blur: the prototype placed by a moving transform, an Embree instance with motion time steps
+    // (motion_steps.h). Call set_shutter() first. A moving shape is a prototype of its own placed so, as
+    // pbrt-v4 places it (AnimatedPrimitive: the shape in object space, the ray carried there at its time).
+    void add_moving_instance(std::uint32_t prototype, const AnimatedTransform& world_from_instance);
+    // The shutter interval [open, close] that ray times fall in (Embree's time 0..1 spans it).
+    void set_shutter(float open, float close);
     void commit();
 
     // Closest hit along the ray within (0, ray.tmax).
@@ -79,6 +86,7 @@ private:
         std::unique_ptr<AlphaCutout> cutout; // owned here; Embree holds a pointer to it
         std::uint32_t prototype = 0;         // Kind::Instance
         Transform world_from_instance;       // Kind::Instance
+        RTCGeometry moving = nullptr;        // Kind::Instance with motion: Embree interpolates its transform
     };
     struct Prototype {
         RTCScene scene = nullptr;
@@ -87,6 +95,8 @@ private:
     };
     // Fills the hit of an Embree hit on the geometry of `rec` along `ray` (in that geometry's space).
     static void fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit);
+    // Embree's ray time: the ray's time as a fraction of the shutter interval.
+    float embree_time(float time) const;
     static void alpha_filter(const RTCFilterFunctionNArguments* args);
     std::uint32_t attach(RTCGeometry geom, Record record);
 
@@ -96,6 +106,7 @@ private:
     std::vector<std::unique_ptr<Prototype>> prototypes_;
     Prototype* building_ = nullptr; // the prototype under construction, if any
     Bounds3f bounds_;
+    float shutter_open_ = 0, shutter_close_ = 1, inv_shutter_ = 1;
 };
 
 } // namespace illum

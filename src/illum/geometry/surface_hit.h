@@ -39,6 +39,7 @@ struct SurfaceHit : TextureEvalContext {
     // `medium`, the medium of the ray that found the hit.
     const MediumInterface* medium_interface = nullptr;
     const Medium* medium = nullptr;
+    float time = 0; // the time of the ray that found the hit; rays spawned here keep it
 
     // Sets dpdu, dpdv, dndu, dndv to the shape's shading partials at the hit, in world space.
     void complete_shading_partials() {
@@ -66,11 +67,13 @@ struct SurfaceHit : TextureEvalContext {
     Ray spawn_ray(Vector3f d) const {
         Ray r = illum::spawn_ray(p, p_error, n, d);
         r.medium = medium_for(d);
+        r.time = time;
         return r;
     }
     Ray spawn_ray_to(Point3f target) const {
         Ray r = illum::spawn_ray_to(p, p_error, n, target);
         r.medium = medium_for(target - p);
+        r.time = time;
         return r;
     }
 };

@@ -12,6 +12,15 @@
 
 namespace illum {
 
+// pbrt-v4's moving transforms: the current transform at the end time (set under ActiveTransform EndTime)
+// and the times of TransformTimes, kept when the end transform differs from the start one (the entity's
+// own transform field is the start one).
+struct TransformMotion {
+    bool animated = false;
+    Transform end;
+    double start_time = 0, end_time = 1;
+};
+
 struct EntityDesc {
     std::string type; // "perspective", "diffuse", "trianglemesh", ...
     ParamSet params;
@@ -20,6 +29,7 @@ struct EntityDesc {
 
 struct CameraDesc : EntityDesc {
     Transform camera_from_world; // pbrt's CTM at the Camera directive
+    TransformMotion motion;      // camera_from_world at the end time, when the camera moves
     std::string medium;          // the outside medium current at the Camera directive ("" for none)
     SourceLocation medium_loc;   // the MediumInterface directive that named it
 };
@@ -43,6 +53,7 @@ struct MaterialRef {
 
 struct ShapeDesc : EntityDesc {
     Transform world_from_object;
+    TransformMotion motion; // world_from_object at the end time, when the shape moves
     bool reverse_orientation = false;
     MaterialRef material;
     int area_light = -1; // index into SceneDesc::area_lights, -1 when the shape does not emit

@@ -268,7 +268,9 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
             out.estimates.push_back({pixel, Color3(0.0f), fs.weight});
             return;
         }
-        PathContext ctx{scene_, tc, rng, scene_radius};
+        // Motion blur: the sample's time, shared by both subpaths and their connections.
+        if (scene_.has_motion) cr->ray = scene_.camera_ray_at(cr->ray, scene_.sample_time(sampler.get_1d()));
+        PathContext ctx{scene_, tc, rng, scene_radius, cr->ray.time};
         PathVertex* cv = sp.camera.data();
         PathVertex* lv = sp.light.data();
 
@@ -306,6 +308,7 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
                 l0.pdf_fwd = pmf * les->pdf_pos.value;
                 Ray lr = les->ray;
                 lr.medium = light->medium_towards(lr.d, les->n);
+                lr.time = ctx.time;
                 n_light = 1 + walk(ctx, lr, (les->flux / pmf).s, les->pdf_dir.value, max_depth,
                                    TransportMode::Importance, ch_light, lv + 1);
                 if (l0.is_infinite_light()) {

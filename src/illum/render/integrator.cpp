@@ -21,6 +21,7 @@ bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, Thre
                      : (ls.n_light == Normal3f{} ? hit.spawn_ray_to(ls.p_light)
                                                  : spawn_ray_to(hit.p, hit.p_error, hit.n, ls.p_light,
                                                                 ls.p_light_error, ls.n_light));
+    shadow.time = hit.time;
     return !occluded(shadow, tc);
 }
 

@@ -67,6 +67,8 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
     if (caustics_only_ && light->type() == LightType::Infinite) return dropped;
     Point2f u_pos = sampler.get_2d(), u_dir = sampler.get_2d();
     std::optional<LightLeSample> les = light->sample_le(u_pos, u_dir, tc.lambda);
+    // Motion blur: the particle's time, drawn in the shutter interval as a camera sample's is.
+    const float time = scene_.has_motion ? scene_.sample_time(sampler.get_1d()) : 0.0f;
     if (!les || !(les->pdf_pos.value > 0) || !(les->pdf_dir.value > 0) || les->flux.is_black())
         return dropped;
     // Media: collisions are sampled in one channel, chosen per particle, and every splat is divided by the
@@ -84,7 +86,8 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
     // only technique, so the splat divides by the path's average density ratio r_u r_l).
     auto connect = [&](const SurfaceHit* hit, Point3f from, const Medium* medium, const CameraWiSample& cs,
                        SampledSpectrum value) {
-        Ray shadow = hit ? hit->spawn_ray_to(cs.p_lens) : Ray{from, cs.p_lens - from, 1 - 1e-4f, medium};
+        Ray shadow =
+            hit ? hit->spawn_ray_to(cs.p_lens) : Ray{from, cs.p_lens - from, 1 - 1e-4f, time, medium};
         SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
         SampledSpectrum t = shadow_transmittance(scene_, shadow, ShadowTarget{cs.p_lens, {}, {}, false, {}},
                                                  ch, rng, tc.lambda, &r_u_t, &r_l_t, &tc.rays);
@@ -128,6 +131,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
     SampledSpectrum beta = (les->flux / pmf).s;
     const float beta0 = beta.max_component();
     Ray ray = les->ray;
+    ray.time = time;
     ray.medium = light->medium_towards(ray.d, les->n);
     bool first_vertex = true; // caustics only: the first scattering must be specular
     for (int depth = 0, crossings = 0; (max_depth_ < 0 || depth < max_depth_) && crossings < 1024;) {
@@ -167,7 +171,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
                             terminated = true;
                             return false;
                         }
-                        ray = Ray{p, wi, kInfinity, medium};
+                        ray = Ray{p, wi, kInfinity, ray.time, medium};
                         scattered = true;
                         return false;
                     }

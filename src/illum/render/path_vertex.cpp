@@ -220,7 +220,7 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
                         // reverse density is the same number).
                         pdf_fwd = phase_pdf;
                         prev.pdf_rev = convert_density(v, phase_pdf, prev);
-                        ray = Ray{p, wi, kInfinity, medium};
+                        ray = Ray{p, wi, kInfinity, ray.time, medium};
                         scattered = true;
                         return false;
                     }
@@ -306,7 +306,7 @@ SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVerte
         if (a.type == VertexType::Surface)
             ray = a.hit.spawn_ray(w);
         else
-            ray = Ray{a.p, w, kInfinity, a.medium_towards(b.p)};
+            ray = Ray{a.p, w, kInfinity, ctx.time, a.medium_towards(b.p)};
     } else {
         target = ShadowTarget{b.p, b.p_error, b.ng, false, {}};
         if (a.type == VertexType::Surface) {
@@ -318,9 +318,10 @@ SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVerte
             }
         } else {
             Point3f q = b.on_surface() ? offset_ray_origin(b.p, b.p_error, b.ng, a.p - b.p) : b.p;
-            ray = Ray{a.p, q - a.p, 1 - 1e-4f, a.medium_towards(b.p)};
+            ray = Ray{a.p, q - a.p, 1 - 1e-4f, ctx.time, a.medium_towards(b.p)};
         }
     }
+    ray.time = ctx.time;
     SampledSpectrum r_u(1.0f), r_l(1.0f);
     SampledSpectrum t =
         shadow_transmittance(ctx.scene, ray, target, ch, ctx.rng, ctx.tc.lambda, &r_u, &r_l, &ctx.tc.rays);

@@ -79,6 +79,7 @@ struct PathContext {
     ThreadContext& tc;
     PCG32& rng;         // free-flight and ratio-tracking steps beyond the sampler's first
     float scene_radius; // of the bounding sphere: infinite lights emit from its disk
+    float time = 0;     // the pixel sample's time (motion blur), shared by both subpaths
 };
 
 // Veach 1997 eq. 5.19: the adjoint BSDF's shading-normal factor |ωo·Ns| |ωi·Ng| / (|ωo·Ng| |ωi·Ns|) for

@@ -16,6 +16,8 @@ bool PhotonTracer::emit(std::uint64_t global_index, const SampledWavelengths& la
     if (!le || le->flux.is_black()) return false;
     // β = Φ_sample / p_light, Φ_sample = L |cos θ| / (p_pos p_dir) (LightLeSample::flux).
     out->ray = le->ray;
+    // Motion blur: the photon's time, drawn in the shutter interval as a camera sample's is.
+    if (scene_.has_motion) out->ray.time = scene_.sample_time(sampler.get_1d());
     out->beta = le->flux.s / pmf;
     return out->beta.is_finite();
 }

@@ -129,6 +129,10 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                 if (dispersive_camera) tc.lambda.terminate_secondary();
                                 std::optional<CameraRay> cr = scene.camera->generate_ray(
                                     p_film, u_lens, spectral ? tc.lambda.hero() : kDLineNm);
+                                // Motion blur: the sample's time, shared by every ray of its path.
+                                if (cr && scene.has_motion)
+                                    cr->ray =
+                                        scene.camera_ray_at(cr->ray, scene.sample_time(tc.sampler.get_1d()));
                                 Radiance3 v(0.0f);
                                 if (cr) v = integrator.estimate(cr->ray, tc) * cr->weight;
                                 tc.arena.reset();

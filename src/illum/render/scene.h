@@ -12,6 +12,7 @@
 #include "illum/bsdf/material.h"
 #include "illum/camera/camera.h"
 #include "illum/camera/film.h"
+#include "illum/camera/camera_motion.h"
 #include "illum/camera/filter.h"
 #include "illum/camera/sensor.h"
 #include "illum/geometry/accelerator.h"
@@ -75,6 +76,21 @@ public:
     const Medium* camera_medium = nullptr;
     RenderRequest request;
     std::vector<std::string> warnings;
+
+    // Motion blur: the shutter interval (the camera's "shutteropen", "shutterclose"), whether anything
+    // moves (the camera or some geometry; only then does a camera sample draw a time, so a still scene
+    // renders as it did without motion blur) and the camera's motion.
+    float shutter_open = 0, shutter_close = 1;
+    bool has_motion = false;
+    CameraMotion camera_motion;
+    // The time of a sample, u uniform in [0, 1): pbrt-v4's CameraBase::SampleTime, lerp(u, open, close).
+    float sample_time(float u) const { return (1 - u) * shutter_open + u * shutter_close; }
+    // A camera ray at the time `time`: where the (moving) camera is then, carrying that time.
+    Ray camera_ray_at(const Ray& r, float time) const {
+        Ray moved = camera_motion.at(r, time);
+        moved.time = time;
+        return moved;
+    }
 
     // Storage that the above points into.
     std::vector<std::unique_ptr<Material>> materials;

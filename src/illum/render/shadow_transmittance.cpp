@@ -75,6 +75,7 @@ SampledSpectrum shadow_transmittance(const Scene& scene, Ray ray, const ShadowTa
             const Medium* m = hit.medium_for(target.p - hit.p);
             ray = spawn_ray_to(hit.p, hit.p_error, hit.n, target.p, target.p_error, target.n);
             ray.medium = m;
+            ray.time = hit.time;
         }
     }
     return SampledSpectrum(0.0f);

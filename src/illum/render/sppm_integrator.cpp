@@ -172,6 +172,7 @@ bool SppmRender::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, std:
                      : (ls.n_light == Normal3f{} ? hit.spawn_ray_to(ls.p_light)
                                                  : spawn_ray_to(hit.p, hit.p_error, hit.n, ls.p_light,
                                                                 ls.p_light_error, ls.n_light));
+    shadow.time = hit.time;
     return !scene_.occluded(shadow);
 }
 
@@ -227,6 +228,7 @@ void SppmRender::trace_camera_path(int x, int y, int iteration, const SampledWav
     };
 
     Ray ray = cr->ray;
+    if (scene_.has_motion) ray = scene_.camera_ray_at(ray, scene_.sample_time(sampler.get_1d()));
     SampledSpectrum beta(cr->weight);
     float eta_scale = 1;
     bool specular_bounce = true; // the camera ray counts as specular: its emission is taken in full

@@ -59,16 +59,17 @@ SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path
         f_hat = SampledSpectrum(p);
         scatter_pdf = p;
         if (ls->at_infinity)
-            shadow = Ray{v.p, ls->wi, kInfinity, v.medium};
+            shadow = Ray{v.p, ls->wi, kInfinity, path.time, v.medium};
         else if (ls->n_light == Normal3f{})
-            shadow = Ray{v.p, ls->p_light - v.p, 1 - 1e-4f, v.medium};
+            shadow = Ray{v.p, ls->p_light - v.p, 1 - 1e-4f, path.time, v.medium};
         else {
             Point3f target =
                 offset_ray_origin(ls->p_light, ls->p_light_error, ls->n_light, v.p - ls->p_light);
-            shadow = Ray{v.p, target - v.p, 1 - 1e-4f, v.medium};
+            shadow = Ray{v.p, target - v.p, 1 - 1e-4f, path.time, v.medium};
         }
     }
 
+    shadow.time = path.time;
     SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
     ShadowTarget target{ls->p_light, ls->p_light_error, ls->n_light, ls->at_infinity, ls->wi};
     SampledSpectrum t_ray = shadow_transmittance(scene_, shadow, target, path.channel, path.rng, tc.lambda,
@@ -117,7 +118,7 @@ SampledSpectrum VolPathIntegrator::sample_equiangular(Segment& seg, const Medium
     SampledSpectrum t_cam = exp(-(mp.sigma_a + mp.sigma_s) * t); // exact: the medium is homogeneous
     SampledSpectrum p_free_flight = mp.sigma_s * t_cam;
     float phase = mp.phase.p(dot(seg.d, ls->wi));
-    Ray shadow{x, ls->p_light - x, 1 - 1e-4f, &medium};
+    Ray shadow{x, ls->p_light - x, 1 - 1e-4f, path.time, &medium};
     SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
     ShadowTarget target{ls->p_light, ls->p_light_error, ls->n_light, false, ls->wi};
     SampledSpectrum t_ray = shadow_transmittance(scene_, shadow, target, path.channel, path.rng, tc.lambda,
@@ -134,6 +135,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
     Ray ray = camera_ray;
     ray.medium = scene_.camera_medium;
     PathState path;
+    path.time = camera_ray.time;
     path.channel = std::min(kSpectrumSamples - 1, int(sampler.get_1d() * kSpectrumSamples));
     {
         float a = sampler.get_1d(), b = sampler.get_1d();
@@ -246,7 +248,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
                         // β *= p / pdf = 1 for the exactly sampled Henyey-Greenstein.
                         r_l = r_u / phase_pdf;
                         prev_ctx = LightSampleContext(p, {}, {});
-                        ray = Ray{p, wi, kInfinity, medium};
+                        ray = Ray{p, wi, kInfinity, ray.time, medium};
                         specular_bounce = false;
                         scattered = true;
                         return false;

@@ -49,6 +49,7 @@ public:
         int channel = 0;
         PCG32 rng;
         HomogeneousCache media;
+        float time = 0; // the camera sample's time (motion blur): every ray of the path has it
     };
     // Where next-event estimation starts: a surface point with its BSDF, or a point in a medium with its
     // phase function (then `hit` and `bsdf` are null).

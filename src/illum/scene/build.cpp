@@ -47,6 +47,7 @@ public:
         scene_->request.output = film.filename;
         scene_->request.save_fp16 = film.save_fp16;
         read_scene_options(desc_.options, scene_->request, diag_);
+        set_shutter();
         build_media();
         scene_->camera_medium = medium_named(desc_.camera.medium, desc_.camera.medium_loc);
         build_materials();
@@ -191,9 +192,64 @@ private:
         return default_material_;
     }
 
+    // Motion blur: the camera's shutter interval, in which each camera sample draws its time, and the
+    // camera's own motion (pbrt-v4 animates world_from_camera, the inverse of the CTM at Camera).
+    void set_shutter() {
+        const CameraDesc& c = desc_.camera;
+        scene_->shutter_open = c.params.get_float("shutteropen", 0);
+        scene_->shutter_close = c.params.get_float("shutterclose", 1);
+        // (shutterclose <= shutteropen is an error of create_sensor: the shutter would never open.)
+        scene_->accelerator.set_shutter(scene_->shutter_open, scene_->shutter_close);
+        if (!c.motion.animated) return;
+        scene_->camera_motion = CameraMotion(AnimatedTransform(
+            c.camera_from_world.inverse(), c.motion.start_time, c.motion.end.inverse(), c.motion.end_time));
+        scene_->has_motion = true;
+        if (scene_->request.integrator == "lightpath" || scene_->request.integrator == "bdpt")
+            diag_.unsupported(c.loc,
+                              fmt::format("integrator \"{}\": the paths it joins to a moving camera see "
+                                          "the camera at its start transform",
+                                          scene_->request.integrator));
+    }
+
+    // A moving shape (pbrt-v4's animated shape): built in object space as a prototype of its own and
+    // placed by its moving transform, as pbrt-v4's AnimatedPrimitive does. Emitters stay at their start
+    // transform (pbrt-v4 rejects moving area lights), and so do moving shapes inside object definitions
+    // (Embree here instances one level deep).
+    bool add_moving_shape(const ShapeDesc& s) {
+        if (s.area_light >= 0) {
+            diag_.unsupported(s.loc,
+                              "a moving area light is not supported (pbrt-v4 rejects it too): it emits "
+                              "from its start transform, still");
+            return false;
+        }
+        if (building_prototype_) {
+            diag_.unsupported(s.loc,
+                              "a moving shape inside an object definition stays at its start transform");
+            return false;
+        }
+        ShapeDesc still = s;
+        still.world_from_object = Transform();
+        still.motion = {};
+        // The orientation a handedness-swapping transform would have flipped (create_shape) is kept.
+        still.reverse_orientation = s.reverse_orientation != s.world_from_object.swaps_handedness();
+        std::uint32_t id = scene_->accelerator.begin_prototype();
+        add_shape(still);
+        scene_->accelerator.end_prototype();
+        // What the copy read, the shape read (the unused-parameter report looks at the shape).
+        const auto& read = still.params.params();
+        const auto& own = s.params.params();
+        for (std::size_t i = 0; i < read.size() && i < own.size(); ++i)
+            own[i].used = own[i].used || read[i].used;
+        scene_->accelerator.add_moving_instance(
+            id, AnimatedTransform(s.world_from_object, s.motion.start_time, s.motion.end, s.motion.end_time));
+        scene_->has_motion = true;
+        return true;
+    }
+
     // A shape's geometry into the accelerator with its material; an emitting shape gets one light per
     // triangle (pbrt-v4) or one for the whole analytic shape, `power` normalised by the exact area.
     void add_shape(const ShapeDesc& s) {
+        if (s.motion.animated && add_moving_shape(s)) return;
         std::optional<ShapeGeometry> g = create_shape(s, textures_);
         if (!g) return;
         std::optional<AreaEmission> e;
@@ -253,6 +309,7 @@ private:
             auto p = prototypes.find(use.name);
             if (p == prototypes.end()) {
                 std::uint32_t id = scene_->accelerator.begin_prototype();
+                building_prototype_ = true;
                 for (const ShapeDesc& shape : it->second.shapes) {
                     ShapeDesc copy = shape;
                     if (copy.area_light >= 0) {
@@ -263,9 +320,17 @@ private:
                     add_shape(copy);
                 }
                 scene_->accelerator.end_prototype();
+                building_prototype_ = false;
                 p = prototypes.emplace(use.name, id).first;
             }
-            scene_->accelerator.add_instance(p->second, use.world_from_instance);
+            if (use.motion.animated) {
+                scene_->accelerator.add_moving_instance(
+                    p->second, AnimatedTransform(use.world_from_instance, use.motion.start_time,
+                                                 use.motion.end, use.motion.end_time));
+                scene_->has_motion = true;
+            } else {
+                scene_->accelerator.add_instance(p->second, use.world_from_instance);
+            }
         }
     }
 
@@ -276,6 +341,7 @@ private:
     std::vector<const Material*> materials_;
     std::unordered_map<std::string, const Material*> named_;
     const Material* default_material_ = nullptr;
+    bool building_prototype_ = false; // adding the shapes of an object definition
     struct NamedMedium {
         const Medium* medium;
         std::size_t report; // index into scene_->medium_reports

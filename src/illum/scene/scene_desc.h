@@ -24,6 +24,7 @@ struct InstanceDefinition {
 struct InstanceUse {
     std::string name;
     Transform world_from_instance;
+    TransformMotion motion; // world_from_instance at the end time, when the instance moves
     SourceLocation loc;
 };
 

@@ -1,5 +1,6 @@
 #include "illum/scene/pbrt/parser.h"
 
+#include "illum/math/animated_transform.h"
 #include "illum/radiometry/color_space.h"
 
 #include <cerrno>
@@ -72,8 +73,14 @@ std::string directory_of(const std::string& path) {
     return d.empty() ? std::string(".") : d;
 }
 
+// Which of the two current transforms (start and end time) the transform directives change.
+enum class Active { All, Start, End };
+
 struct GraphicsState {
-    Transform ctm;
+    // pbrt-v4's CTM is two transforms, at the start and the end time (TransformTimes); ActiveTransform
+    // picks which of them the transform directives change.
+    Transform ctm, ctm_end;
+    Active active = Active::All;
     bool reverse_orientation = false;
     MaterialRef material;
     int area_light = -1;
@@ -202,15 +209,45 @@ private:
         return Transform(m, *inv);
     }
 
+    // Sets the active current transforms (start, end or both) to t(current).
+    template <typename F>
+    void for_active(FileFrame& f, const Token& directive, F t) {
+        for (Transform* c : {&gs_.ctm, &gs_.ctm_end}) {
+            if ((c == &gs_.ctm && gs_.active == Active::End) ||
+                (c == &gs_.ctm_end && gs_.active == Active::Start))
+                continue;
+            Transform n = t(*c);
+            if (!n.matrix().is_finite() || !n.inverse_matrix().is_finite())
+                f.tok.fail(directive,
+                           fmt::format("{}: the current transform is no longer finite", directive.text));
+            *c = n;
+        }
+    }
     void set_ctm(FileFrame& f, const Token& directive, const Transform& t) {
-        if (active_ == Active::End) return;
-        if (!t.matrix().is_finite() || !t.inverse_matrix().is_finite())
-            f.tok.fail(directive,
-                       fmt::format("{}: the current transform is no longer finite", directive.text));
-        gs_.ctm = t;
+        for_active(f, directive, [&](const Transform&) { return t; });
     }
     void concat(FileFrame& f, const Token& directive, const Transform& t) {
-        set_ctm(f, directive, gs_.ctm * t);
+        for_active(f, directive, [&](const Transform& c) { return c * t; });
+    }
+
+    // The end-time transform when it differs from the start one (pbrt-v4's CTMIsAnimated); a moving
+    // transform must be affine to be interpolated.
+    TransformMotion motion(const SourceLocation& loc) const {
+        TransformMotion m;
+        if (gs_.ctm == gs_.ctm_end) return m;
+        m.animated = true;
+        m.end = gs_.ctm_end;
+        m.start_time = start_time_;
+        m.end_time = end_time_;
+        if (!is_affine(gs_.ctm.matrix()) || !is_affine(gs_.ctm_end.matrix()))
+            throw Error(loc, "a moving transform must be affine (its last row 0 0 0 1) to be interpolated");
+        return m;
+    }
+    // pbrt-v4 does not move lights, media or textures: it warns and uses the start transform.
+    void warn_if_moving(const SourceLocation& loc, const char* what) {
+        if (!(gs_.ctm == gs_.ctm_end))
+            warn(loc, fmt::format("a moving {} is not supported (as in pbrt-v4): its start transform is used",
+                                  what));
     }
 
     void require_world(FileFrame& f, const Token& d, bool world) {
@@ -474,37 +511,37 @@ private:
             set_ctm(f, d, Transform());
         } else if (name == "CoordinateSystem") {
             std::string n = read_string(f, d, "name");
-            named_coords_[n] = gs_.ctm;
+            named_coords_[n] = {gs_.ctm, gs_.ctm_end};
         } else if (name == "CoordSysTransform") {
             std::string n = read_string(f, d, "name");
             auto it = named_coords_.find(n);
             if (it == named_coords_.end())
                 warn(loc, fmt::format("CoordSysTransform: no coordinate system named \"{}\"; ignored", n));
-            else
-                set_ctm(f, d, it->second);
+            else {
+                // pbrt-v4 sets both transforms, whichever are active.
+                gs_.ctm = it->second.first;
+                gs_.ctm_end = it->second.second;
+            }
         } else if (name == "ActiveTransform") {
             Token t = f.tok.next();
             if (t.kind == TokenKind::Word && t.text == "All")
-                active_ = Active::All;
+                gs_.active = Active::All;
             else if (t.kind == TokenKind::Word && t.text == "StartTime")
-                active_ = Active::Start;
+                gs_.active = Active::Start;
             else if (t.kind == TokenKind::Word && t.text == "EndTime")
-                active_ = Active::End;
+                gs_.active = Active::End;
             else
                 f.tok.fail(
                     t.kind == TokenKind::End ? d : t,
                     fmt::format("ActiveTransform expects All, StartTime or EndTime, found {}", quoted(t)));
-            if (active_ != Active::All && !warned_motion_) {
-                warned_motion_ = true;
-                warn(loc, "motion blur is not supported: transforms given for the end time are ignored");
-            }
         } else if (name == "TransformTimes") {
-            read_numbers(f, d, 2);
-            if (!warned_motion_) {
-                warned_motion_ = true;
-                warn(loc,
-                     "motion blur is not supported: TransformTimes ignored, the start transform is used");
-            }
+            require_world(f, d, false); // pbrt-v4: an option, before WorldBegin
+            auto v = read_numbers(f, d, 2);
+            if (v[1] < v[0])
+                f.tok.fail(d, fmt::format("TransformTimes: the end time {} is before the start time {}", v[1],
+                                          v[0]));
+            start_time_ = v[0];
+            end_time_ = v[1];
         } else if (name == "ReverseOrientation") {
             require_world(f, d, true);
             gs_.reverse_orientation = !gs_.reverse_orientation;
@@ -524,6 +561,7 @@ private:
             }
             GraphicsState saved;
             saved.ctm = gs_.ctm;
+            saved.ctm_end = gs_.ctm_end;
             stack_.push_back({'t', loc, std::move(saved)});
         } else if (name == "TransformEnd") {
             pop(f, d, 't');
@@ -548,9 +586,9 @@ private:
                 f.tok.fail(d, fmt::format("WorldBegin appears twice (first at {})", world_loc_.to_string()));
             in_world_ = true;
             world_loc_ = loc;
-            gs_.ctm = Transform();
-            active_ = Active::All;
-            named_coords_["world"] = Transform();
+            gs_.ctm = gs_.ctm_end = Transform();
+            gs_.active = Active::All;
+            named_coords_["world"] = {Transform(), Transform()};
         } else if (name == "WorldEnd") {
             require_world(f, d, true);
             warn(loc, "WorldEnd is a pbrt-v3 directive; ignored");
@@ -584,7 +622,7 @@ private:
                 f.tok.fail(d, fmt::format("ObjectInstance \"{}\" inside the definition of \"{}\": instances "
                                           "cannot nest",
                                           n, instance_->name));
-            sc_.instance_uses.push_back({n, gs_.ctm, loc});
+            sc_.instance_uses.push_back({n, gs_.ctm, motion(loc), loc});
         }
 
         // Rendering options (before WorldBegin).
@@ -596,9 +634,10 @@ private:
             sc_.camera.params = read_params(f, true);
             sc_.camera.loc = loc;
             sc_.camera.camera_from_world = gs_.ctm;
+            sc_.camera.motion = motion(loc);
             sc_.camera.medium = gs_.outside_medium;
             sc_.camera.medium_loc = gs_.medium_loc;
-            named_coords_["camera"] = gs_.ctm.inverse();
+            named_coords_["camera"] = {gs_.ctm.inverse(), gs_.ctm_end.inverse()};
         } else if (name == "Film" || name == "Sampler" || name == "PixelFilter" || name == "Integrator" ||
                    name == "Accelerator") {
             require_world(f, d, false);
@@ -661,6 +700,7 @@ private:
             m.type = take_type(f, d, ps, n, m.params);
             m.loc = loc;
             m.world_from_medium = gs_.ctm;
+            warn_if_moving(loc, "medium");
             if (sc_.media.count(n))
                 f.tok.fail(nt, fmt::format("medium \"{}\" redefined (first defined at {})", n,
                                            sc_.media[n].loc.to_string()));
@@ -717,6 +757,7 @@ private:
             t.params = with_defaults(read_params(f, true), gs_.texture_attrs);
             t.loc = loc;
             t.world_from_texture = gs_.ctm;
+            warn_if_moving(loc, "texture");
             auto& names = t.value_type == "float" ? sc_.float_textures : sc_.spectrum_textures;
             if (auto it = names.find(t.name); it != names.end())
                 f.tok.fail(nt, fmt::format("{} texture \"{}\" redefined (first defined at {})", t.value_type,
@@ -733,6 +774,7 @@ private:
             l.params = with_defaults(read_params(f, true), gs_.light_attrs);
             l.loc = loc;
             l.world_from_light = gs_.ctm;
+            warn_if_moving(loc, "light");
             l.medium = gs_.outside_medium;
             l.medium_loc = gs_.medium_loc;
             if (instance_)
@@ -756,6 +798,7 @@ private:
             s.params = with_defaults(read_params(f, true), gs_.shape_attrs);
             s.loc = loc;
             s.world_from_object = gs_.ctm;
+            s.motion = motion(loc);
             s.reverse_orientation = gs_.reverse_orientation;
             s.material = gs_.material;
             s.area_light = gs_.area_light;
@@ -805,9 +848,10 @@ private:
         if (top.kind != kind)
             f.tok.fail(d, fmt::format("{} does not match the {} at {}", d.text, push_name(top.kind),
                                       top.loc.to_string()));
-        if (kind == 't')
+        if (kind == 't') {
             gs_.ctm = top.saved.ctm;
-        else
+            gs_.ctm_end = top.saved.ctm_end;
+        } else
             gs_ = std::move(top.saved);
         stack_.pop_back();
     }
@@ -852,8 +896,6 @@ private:
                                                  use.name));
     }
 
-    enum class Active { All, Start, End };
-
     SceneDesc& sc_;
     ParseOptions options_;
     std::vector<std::unique_ptr<FileFrame>> files_;
@@ -861,11 +903,11 @@ private:
     std::vector<PushEntry> stack_;
     bool in_world_ = false;
     SourceLocation world_loc_;
-    std::map<std::string, Transform> named_coords_;
+    std::map<std::string, std::pair<Transform, Transform>> named_coords_; // start and end transforms
     InstanceDefinition* instance_ = nullptr;
     std::vector<std::pair<std::string, SourceLocation>> named_material_uses_;
-    Active active_ = Active::All;
-    bool warned_motion_ = false, warned_transform_begin_ = false, warned_instanced_area_light_ = false;
+    double start_time_ = 0, end_time_ = 1; // TransformTimes
+    bool warned_transform_begin_ = false, warned_instanced_area_light_ = false;
 };
 
 } // namespace
