@@ -130,11 +130,11 @@ TEST(PbrtMaterials, ConductorReflectanceIsTheNormalIncidenceFresnel) {
 
 TEST(PbrtMaterials, UnknownAndUnsupportedTypes) {
     EXPECT_THROW(build("Material \"plastic\"\nShape \"sphere\"\n"), Error);
-    auto s = build("Material \"hair\"\nShape \"sphere\"\n");
+    auto s = build("Material \"measured\"\nShape \"sphere\"\n");
     EXPECT_EQ(s->warnings.size(), 1u);
     BuildOptions strict;
     strict.strict = true;
-    EXPECT_THROW(build("Material \"hair\"\nShape \"sphere\"\n", strict), Error);
+    EXPECT_THROW(build("Material \"measured\"\nShape \"sphere\"\n", strict), Error);
 }
 
 TEST(PbrtMaterials, CoatedLayerParametersAreReadWithoutWarnings) {

@@ -204,6 +204,9 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
         if (traits.delta) {
             c.r.status = CheckStatus::Skip;
             c.r.detail = "delta lobes (directions checked below)";
+        } else if (!traits.not_reciprocal.empty()) {
+            c.r.status = CheckStatus::Skip;
+            c.r.detail = "not reciprocal: " + traits.not_reciprocal;
         } else if (traits.stochastic) {
             // f is a stochastic estimate: compare f(a,b) - f(b,a) with a the more normal direction, whose
             // mean must vanish for a reciprocal model (a systematic asymmetry would not).
@@ -459,6 +462,7 @@ AuditTraits case_traits(const ModelSpec& model, const AuditCase& c, const ParamV
     t.non_physical = model.non_physical;
     t.stochastic = model.stochastic;
     t.eta = model_eta(model, v);
+    t.not_reciprocal = model.not_reciprocal;
     return t;
 }
 

@@ -31,11 +31,12 @@ struct CheckResult {
 
 // What the audit needs to know about the model besides its BxDF.
 struct AuditTraits {
-    bool delta = false;        // only delta lobes
-    bool lossless = false;     // albedo 1 at every angle
-    bool non_physical = false; // reciprocity/energy reported as Info
-    bool stochastic = false;   // f() stochastic, pdf() approximate: no chi-square, no exact consistency
-    float eta = 1;             // interior index, for generalised reciprocity of transmission
+    bool delta = false;         // only delta lobes
+    bool lossless = false;      // albedo 1 at every angle
+    bool non_physical = false;  // reciprocity/energy reported as Info
+    bool stochastic = false;    // f() stochastic, pdf() approximate: no chi-square, no exact consistency
+    float eta = 1;              // interior index, for generalised reciprocity of transmission
+    std::string not_reciprocal; // non-empty: reciprocity does not hold, for this reason (check skipped)
 };
 
 struct AuditOptions {

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "illum/bsdf/albedo.h"
+#include "illum/bsdf/hair_material.h"
 #include "illum/bsdf/pbrt_materials.h"
 #include "illum/bsdf/registry.h"
 #include "illum/bsdf/shared_bxdf_material.h"
@@ -57,7 +58,8 @@ public:
         if (type == "interface") return own(std::make_unique<InterfaceMaterial>());
         if (type == "mix") return mix();
         if (type == "subsurface") return subsurface();
-        if (type == "measured" || type == "hair") {
+        if (type == "hair") return hair();
+        if (type == "measured") {
             tex_.diagnostics().unsupported(
                 m_.loc, fmt::format("material \"{}\" is approximated by a grey diffuse one", type));
             for (const Param& p : m_.params.params()) p.used = true;
@@ -175,6 +177,31 @@ private:
         auto interior =
             std::make_unique<HomogeneousMedium>(sigma_a, sigma_s, g, Emission(Color3(0.0f)), false);
         return own(std::make_unique<SubsurfaceMaterial>(std::move(eta), rough, std::move(interior)));
+    }
+
+    // pbrt-v4's "hair" (hair_material.h): the first of sigma_a, reflectance (or "color") and the melanins
+    // that is given sets the absorption; the others stay unread, so the builder reports them unused.
+    const Material* hair() {
+        const ParamSet& ps = m_.params;
+        HairMaterial::Absorption a;
+        if (const Param* p = ps.find("sigma_a"); p && p->type == ParamType::Spectrum) {
+            SpectrumParam s = spectrum_param(*p, SpectrumKind::Unbounded);
+            p->used = true;
+            a.sigma_a.texture = tex_.constant(s.rgb);
+            a.sigma_a.spectrum = std::move(s.spectrum);
+        } else if (p) {
+            a.sigma_a.texture = tex_.color(ps, "sigma_a", std::nullopt);
+        } else if (ps.has("reflectance") || ps.has("color")) {
+            a.reflectance = tex_.color(ps, ps.has("reflectance") ? "reflectance" : "color", std::nullopt);
+        } else if (ps.has("eumelanin") || ps.has("pheomelanin")) {
+            a.eumelanin = tex_.scalar(ps, "eumelanin", 0.0f);
+            a.pheomelanin = tex_.scalar(ps, "pheomelanin", 0.0f);
+        } else {
+            a.eumelanin = tex_.constant(1.3f);
+        }
+        return own(std::make_unique<HairMaterial>(
+            std::move(a), tex_.scalar(ps, "eta", 1.55f), tex_.scalar(ps, "beta_m", 0.3f),
+            tex_.scalar(ps, "beta_n", 0.3f), tex_.scalar(ps, "alpha", 2.0f)));
     }
 
     const Material* own(std::unique_ptr<Material> m) {

@@ -11,6 +11,7 @@
 #include "illum/bsdf/cook_torrance.h"
 #include "illum/bsdf/dielectric.h"
 #include "illum/bsdf/diffuse_transmission.h"
+#include "illum/bsdf/hair.h"
 #include "illum/bsdf/lambert.h"
 #include "illum/bsdf/merl.h"
 #include "illum/bsdf/mirror.h"
@@ -528,6 +529,36 @@ std::vector<ModelSpec> build_models() {
              return m.template make<ToonBxDF>(p.spectrum("reflectance"_p), p.spectrum("ks"_p),
                                               p.integer("bands"_p), p.scalar("highlight"_p));
          })});
+    m.push_back(
+        {"hair",
+         "hair fibre: R, TT, TRT and the rest with cuticle tilts (Chiang et al. 2016, as pbrt-v4's hair)",
+         {scalar("h", 0, -1, 1, "offset across the fibre, sin γo (a curve hit gives -1 + 2v)"),
+          scalar("eta", 1.55, 1e-3, 100, "index of refraction of the fibre"),
+          rgb("sigma_a", "0.54467,0.9061,1.781", 0, 1e4,
+              "absorption per unit radius (default: eumelanin 1.3, pbrt-v4's brown)"),
+          scalar("beta_m", 0.3, 0, 1, "longitudinal roughness"),
+          scalar("beta_n", 0.3, 0, 1, "azimuthal roughness"),
+          scalar("alpha", 2, -90, 90, "cuticle scale tilt, degrees")},
+         {{P{{"h", "0.3"}}},
+          {P{{"sigma_a", "0"}, {"h", "0.5"}, {"alpha", "0"}}, true},
+          {P{{"sigma_a", "0"}, {"h", "-0.7"}, {"beta_m", "0.1"}, {"beta_n", "0.8"}}, true},
+          {P{{"sigma_a", "0"}, {"h", "0.1"}, {"beta_m", "0.8"}, {"beta_n", "0.1"}}, true},
+          {P{{"sigma_a", "0.2,0.5,1.5"},
+             {"h", "0.9"},
+             {"beta_m", "0.8"},
+             {"beta_n", "0.2"},
+             {"alpha", "5"}}}},
+         false,
+         false,
+         false,
+         "",
+         factory([](const auto& p, const auto& m) {
+             return m.template make<HairBxDF>(p.scalar("h"_p), p.scalar("eta"_p), p.spectrum("sigma_a"_p),
+                                              p.scalar("beta_m"_p), p.scalar("beta_n"_p),
+                                              p.scalar("alpha"_p));
+         })});
+    m.back().not_reciprocal = "h and the cuticle tilts are defined from wo's side (Chiang et al. 2016); "
+                              "pbrt-v4 disables its hair reciprocity test too";
     // Closed-form albedos at normal incidence: ρ for Lambert, R for the mirror, R + T for the sheet.
     for (ModelSpec& spec : m) {
         if (spec.name == "lambert" || spec.name == "mirror")

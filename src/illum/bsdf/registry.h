@@ -231,6 +231,9 @@ struct ModelSpec {
     // The directional albedo at normal incidence in closed form, where the model has one (the albedo pass
     // shows it at each hit of a textured material; otherwise it shows the estimate at the defaults).
     ModelFactory::NormalAlbedo normal_albedo = nullptr;
+    // Why f(wo, wi) = f(wi, wo) does not hold for this model (empty: it must); the audit then skips the
+    // reciprocity check and shows the reason.
+    std::string not_reciprocal = {};
 
     std::unique_ptr<BxDF> make(const ParamValues& values) const {
         return factory.make(ModelArgs(values.args, nullptr));

@@ -172,6 +172,7 @@ std::uint32_t Accelerator::begin_prototype() {
 
 void Accelerator::end_prototype() {
     if (!building_) return;
+    flush_curves();
     rtcCommitScene(building_->scene);
     building_ = nullptr;
 }
@@ -343,7 +344,73 @@ std::uint32_t Accelerator::add_shape(std::unique_ptr<AnalyticShape> shape, const
     return attach(geom, std::move(r));
 }
 
-void Accelerator::commit() { rtcCommitScene(scene_); }
+void Accelerator::add_curves(std::unique_ptr<Curves> curves, const Material* material,
+                             const MediumInterface* medium_interface) {
+    if (curves->segment_count() == 0) return;
+    (building_ ? building_->bounds : bounds_).extend(curves->bounds());
+    std::vector<PendingCurves>& pending = building_ ? building_->pending_curves : pending_curves_;
+    for (PendingCurves& p : pending)
+        if (p.material == material && p.medium_interface == medium_interface &&
+            p.curves->type == curves->type && p.curves->flip_normal == curves->flip_normal &&
+            p.curves->tessellation == curves->tessellation) {
+            p.curves->append(*curves);
+            return;
+        }
+    pending.push_back({std::move(curves), material, medium_interface});
+}
+
+void Accelerator::flush_curves() {
+    std::vector<PendingCurves>& pending = building_ ? building_->pending_curves : pending_curves_;
+    for (PendingCurves& p : pending) {
+        const Curves& c = *p.curves;
+        const std::size_t n = c.segment_count();
+        RTCGeometry geom = rtcNewGeometry(device_, c.type == CurveType::Ribbon
+                                                       ? RTC_GEOMETRY_TYPE_NORMAL_ORIENTED_BEZIER_CURVE
+                                                       : RTC_GEOMETRY_TYPE_FLAT_BEZIER_CURVE);
+        rtcSetGeometryTessellationRate(geom, float(c.tessellation));
+        // Four control points (x, y, z, radius) per segment; radii r0, (2r0 + r1)/3, (r0 + 2r1)/3, r1 make
+        // Embree's Bézier-interpolated radius linear in u, as pbrt-v4's width is.
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                              RTC_FORMAT_FLOAT4, 4 * sizeof(float), 4 * n));
+        auto* idx = static_cast<unsigned*>(
+            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned), n));
+        float* nb = nullptr;
+        if (c.type == CurveType::Ribbon)
+            nb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_NORMAL, 0,
+                                                             RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4 * n));
+        for (std::size_t i = 0; i < n; ++i) {
+            idx[i] = unsigned(4 * i);
+            float r0 = 0.5f * c.width[i][0], r1 = 0.5f * c.width[i][1];
+            for (int k = 0; k < 4; ++k) {
+                float* q = v + 4 * (4 * i + std::size_t(k));
+                q[0] = c.cp[i][std::size_t(k)].x;
+                q[1] = c.cp[i][std::size_t(k)].y;
+                q[2] = c.cp[i][std::size_t(k)].z;
+                q[3] = r0 + (r1 - r0) * float(k) / 3;
+                if (nb) {
+                    // The normal's control values linear in u (Embree orients the ribbon by them).
+                    Vector3f a(c.normal[i][0]), b(c.normal[i][1]), m = a + (b - a) * (float(k) / 3);
+                    float* o = nb + 3 * (4 * i + std::size_t(k));
+                    o[0] = m.x;
+                    o[1] = m.y;
+                    o[2] = m.z;
+                }
+            }
+        }
+        Record r;
+        r.kind = Kind::Curve;
+        r.curves = std::move(p.curves);
+        r.material = p.material;
+        r.medium_interface = p.medium_interface;
+        attach(geom, std::move(r));
+    }
+    pending.clear();
+}
+
+void Accelerator::commit() {
+    flush_curves();
+    rtcCommitScene(scene_);
+}
 
 bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
     RTCIntersectContext ctx;
@@ -409,6 +476,9 @@ void Accelerator::fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ra
     case Kind::NativeSphere:
     case Kind::Analytic:
         rec.shape->fill_hit(t, ray, hit);
+        break;
+    case Kind::Curve:
+        rec.curves->fill_hit(rh.hit.primID, rh.hit.u, t, ray, hit);
         break;
     case Kind::Instance:
         break; // never hit itself: Embree reports the instanced geometry

@@ -11,6 +11,7 @@
 #include <embree3/rtcore.h>
 
 #include "illum/geometry/analytic_shape.h"
+#include "illum/geometry/curves.h"
 #include "illum/geometry/surface_hit.h"
 #include "illum/geometry/triangle_mesh.h"
 #include "illum/math/animated_transform.h"
@@ -40,6 +41,12 @@ public:
     std::uint32_t add_shape(std::unique_ptr<AnalyticShape> shape, const Material* material,
                             const Light* light, bool native_sphere = false,
                             const MediumInterface* medium_interface = nullptr);
+    // Curves (pbrt-v4's "curve") as Embree's native Bézier curves: flat and cylinder as ray-facing ribbons,
+    // ribbons oriented by their normals (curves.h). All curves of one material, medium interface,
+    // type, orientation and tessellation rate are gathered into one Embree geometry, made at commit() or
+    // end_prototype().
+    void add_curves(std::unique_ptr<Curves> curves, const Material* material,
+                    const MediumInterface* medium_interface = nullptr);
     // Object instancing (pbrt's ObjectBegin/ObjectInstance): between begin_prototype() and end_prototype()
     // the add_* calls build a prototype (an Embree scene of its own, in instance space); add_instance()
     // places it in the world any number of times at the cost of one Embree instance each.
@@ -71,7 +78,7 @@ public:
     std::size_t geometry_count() const { return records_.size(); }
 
 private:
-    enum class Kind : std::uint8_t { Mesh, NativeSphere, Analytic, Instance };
+    enum class Kind : std::uint8_t { Mesh, NativeSphere, Analytic, Instance, Curve };
     struct AlphaCutout {
         const TriangleMesh* mesh;
         const FloatTexture* alpha;
@@ -80,6 +87,7 @@ private:
         Kind kind = Kind::Mesh;
         std::unique_ptr<TriangleMesh> mesh;
         std::unique_ptr<AnalyticShape> shape;
+        std::unique_ptr<Curves> curves;
         const Material* material = nullptr;
         const MediumInterface* medium_interface = nullptr;
         std::vector<const Light*> lights;
@@ -88,10 +96,17 @@ private:
         Transform world_from_instance;       // Kind::Instance
         RTCGeometry moving = nullptr;        // Kind::Instance with motion: Embree interpolates its transform
     };
+    // Curves gathered for one Embree geometry.
+    struct PendingCurves {
+        std::unique_ptr<Curves> curves;
+        const Material* material = nullptr;
+        const MediumInterface* medium_interface = nullptr;
+    };
     struct Prototype {
         RTCScene scene = nullptr;
         std::vector<Record> records;
         Bounds3f bounds;
+        std::vector<PendingCurves> pending_curves;
     };
     // Fills the hit of an Embree hit on the geometry of `rec` along `ray` (in that geometry's space).
     static void fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit);
@@ -99,12 +114,15 @@ private:
     float embree_time(float time) const;
     static void alpha_filter(const RTCFilterFunctionNArguments* args);
     std::uint32_t attach(RTCGeometry geom, Record record);
+    // Makes the Embree geometries of the curves gathered for the world or the prototype being built.
+    void flush_curves();
 
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
     std::vector<Record> records_;
     std::vector<std::unique_ptr<Prototype>> prototypes_;
-    Prototype* building_ = nullptr; // the prototype under construction, if any
+    Prototype* building_ = nullptr;             // the prototype under construction, if any
+    std::vector<PendingCurves> pending_curves_; // the world's
     Bounds3f bounds_;
     float shutter_open_ = 0, shutter_close_ = 1, inv_shutter_ = 1;
 };

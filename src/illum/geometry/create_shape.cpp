@@ -175,7 +175,14 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
         g.analytic = disk(s);
     } else if (s.type == "cylinder") {
         g.analytic = cylinder(s);
-    } else if (s.type == "loopsubdiv" || s.type == "curve" || s.type == "cone" || s.type == "paraboloid" ||
+    } else if (s.type == "curve") {
+        g.curves = create_curves(s, textures.diagnostics());
+        if (g.alpha) {
+            textures.diagnostics().unsupported(param_loc(s, "alpha"), "curve \"alpha\" is ignored");
+            g.alpha = nullptr;
+        }
+        return g;
+    } else if (s.type == "loopsubdiv" || s.type == "cone" || s.type == "paraboloid" ||
                s.type == "hyperboloid") {
         textures.diagnostics().unsupported(
             s.loc, fmt::format("shape \"{}\" is not supported yet and is skipped", s.type));

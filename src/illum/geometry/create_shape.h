@@ -1,5 +1,5 @@
 // The geometry of a Shape directive: pbrt-v4's trianglemesh, plymesh, bilinearmesh (as triangles), sphere,
-// disk and cylinder, in world space, with its alpha cut-out. The scene builder adds the result to the
+// disk, cylinder and curve, in world space, with its alpha cut-out. The scene builder adds the result to the
 // accelerator and gives it its material and area light.
 #pragma once
 
@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "illum/geometry/analytic_shape.h"
+#include "illum/geometry/curves.h"
 #include "illum/geometry/triangle_mesh.h"
 #include "illum/param/entity.h"
 #include "illum/texture/texture_params.h"
@@ -15,7 +16,8 @@ namespace illum {
 
 struct ShapeGeometry {
     std::unique_ptr<TriangleMesh> mesh;      // a mesh, in world space and finalized, or
-    std::unique_ptr<AnalyticShape> analytic; // an analytic shape (its alpha set)
+    std::unique_ptr<AnalyticShape> analytic; // an analytic shape (its alpha set), or
+    std::unique_ptr<Curves> curves;          // curve segments (in world space)
     const FloatTexture* alpha = nullptr;     // pbrt-v4's "alpha" cut-out; nullptr when opaque
 };
 

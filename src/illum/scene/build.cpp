@@ -256,6 +256,13 @@ private:
         if (s.area_light >= 0) e = create_area_emission(desc_.area_lights.at(s.area_light), diag_);
         const Material* material = material_of(s.material, s.loc);
         const MediumInterface* mi = medium_interface_of(s, material);
+        if (g->curves) {
+            if (e)
+                diag_.unsupported(s.loc,
+                                  "an area light on a curve is ignored (pbrt-v4 cannot sample curves)");
+            scene_->accelerator.add_curves(std::move(g->curves), material, mi);
+            return;
+        }
         if (g->mesh) {
             std::vector<const Light*> tri_lights;
             if (e) {
