@@ -265,7 +265,11 @@ void add_render_command(CLI::App& app) {
         ->check(positive_integer());
     cmd->add_option("--seed", args->seed, "Seed of the sample sequences");
     cmd->add_option("--integrator", args->integrator,
-                    "path, volpath, bdpt, direct, albedo, normal, lightpath or sppm (default: the scene's)");
+                    "path, volpath, bdpt, direct, albedo, normal, lightpath, sppm or vcm (default: the scene's). "
+                    "vcm (vertex connection and merging) takes from the scene's Integrator directive "
+                    "maxdepth, photonsperiteration (-1: pixels), radius (world units; default 1.5 pixel "
+                    "footprints of the scene's extent), alpha (0.75), mode (vcm, vc or vm) and "
+                    "misheuristic (balance or power)");
     cmd->add_option("--max-depth", args->max_depth,
                     "Maximum number of scattering events (default: the scene's)")
         ->check(CLI::Range(-1, 100000));
