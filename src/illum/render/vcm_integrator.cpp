@@ -667,8 +667,9 @@ float VCMIntegrator::initial_radius() const {
     Point3f c;
     float r = 0;
     scene_.accelerator.bounds().bounding_sphere(&c, &r);
-    // 1.5 pixel footprints of the scene's bounding sphere when it fills the image's larger side.
-    return 1.5f * 2 * r / float(std::max(1, std::max(scene_.width, scene_.height)));
+    // Half the footprint of a pixel on the scene's bounding sphere's diameter spread over the image's larger
+    // side (about a pixel's footprint where the scene fills the view).
+    return r / float(std::max(1, std::max(scene_.width, scene_.height)));
 }
 
 long long VCMIntegrator::light_subpaths_per_iteration() const {

@@ -80,8 +80,9 @@ public:
     // options.spp is the number of iterations; a time budget renders whole iterations.
     RenderResult render_image(const RenderOptions& options) const override;
     RenderResult render_vcm(const RenderOptions& options, VcmStats* stats) const;
-    // The initial radius used: the setting, or 1.5 pixel footprints of the scene's bounding sphere
-    // (its diameter over the image's larger side).
+    // The initial radius used: the setting, or the scene's bounding-sphere radius over the image's larger
+    // side in pixels (half a pixel's footprint if the sphere's diameter filled the image; about one pixel's
+    // footprint in the Cornell box as framed by the shared scenes).
     float initial_radius() const;
     long long light_subpaths_per_iteration() const;
     const VcmSettings& settings() const { return settings_; }
