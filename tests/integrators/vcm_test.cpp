@@ -10,6 +10,7 @@
 
 #include "illum/image/image_io.h"
 #include "illum/math/rng.h"
+#include "illum/render/light_vertex_grid.h"
 #include "illum/render/vcm_integrator.h"
 #include "illum/render/vcm_mis.h"
 #include "illum/scene/build.h"
@@ -131,6 +132,42 @@ TEST(VcmMis, WeightsOfEveryTechniqueSumToOne) {
         }
     }
     EXPECT_GT(checked, 30000);
+}
+
+// The grid finds every point within r of a query exactly once, and no other (against brute force; points
+// clustered on two planes and scattered, queries near and off them).
+TEST(LightVertexGrid, FindsExactlyThePointsWithinTheRadius) {
+    PCG32 rng(5);
+    std::vector<Point3f> pts;
+    for (int i = 0; i < 3000; ++i) {
+        float u = rng.uniform_float(), v = rng.uniform_float();
+        if (i % 3 == 0)
+            pts.push_back(Point3f{u, v, 0.0f});
+        else if (i % 3 == 1)
+            pts.push_back(Point3f{u, 0.5f, v});
+        else
+            pts.push_back(Point3f{u * 2 - 1, v * 3, rng.uniform_float()});
+    }
+    for (float r : {0.003f, 0.05f, 0.4f}) {
+        LightVertexGrid grid;
+        grid.build(pts, r);
+        for (int q = 0; q < 300; ++q) {
+            Point3f x{rng.uniform_float() * 2.4f - 1.2f, rng.uniform_float() * 3.2f - 0.1f,
+                      q % 2 ? 0.0f : rng.uniform_float() * 1.2f - 0.1f};
+            if (q % 5 == 0) x = pts[std::size_t(q) * 7];
+            std::vector<int> seen(pts.size(), 0);
+            grid.for_within(x, [&](std::uint32_t i) { ++seen[i]; });
+            for (std::size_t i = 0; i < pts.size(); ++i) {
+                bool within = length_squared(pts[i] - x) <= r * r;
+                ASSERT_EQ(seen[i], within ? 1 : 0) << "r " << r << " query " << q << " point " << i;
+            }
+        }
+    }
+    LightVertexGrid empty;
+    empty.build({}, 0.1f);
+    int visits = 0;
+    empty.for_within(Point3f{0, 0, 0}, [&](std::uint32_t) { ++visits; });
+    EXPECT_EQ(visits, 0);
 }
 
 RenderSetup vcm(int spp, int max_depth = -2, std::uint64_t seed = 7) {

@@ -11,9 +11,9 @@
 
 #include "illum/camera/film.h"
 #include "illum/camera/splat_film.h"
+#include "illum/render/light_vertex_grid.h"
 #include "illum/render/path_vertex.h"
 #include "illum/render/vcm_mis.h"
-#include "illum/render/visible_point_grid.h"
 #include "illum/util/error.h"
 #include "illum/util/progress.h"
 
@@ -152,9 +152,8 @@ private:
     float radius_ = 0;
     std::vector<LightChunk> light_chunks_;
     std::vector<Point3f> grid_p_;
-    std::vector<float> grid_r_;
     std::vector<const StoredVertex*> grid_v_;
-    VisiblePointGrid grid_;
+    LightVertexGrid grid_;
 
     std::unique_ptr<tbb::enumerable_thread_specific<ThreadContext>> contexts_;
     std::unique_ptr<tbb::enumerable_thread_specific<Scratch>> scratch_;
@@ -298,10 +297,8 @@ void VcmRender::build_grid() {
                     grid_p_.push_back(sv.v.p);
                     grid_v_.push_back(&sv);
                 }
-    grid_r_.assign(grid_p_.size(), radius_);
-    grid_.build(grid_p_, grid_r_);
+    grid_.build(grid_p_, radius_);
     grid_bytes_ = std::max(grid_bytes_, grid_.memory_bytes() + grid_p_.capacity() * sizeof(Point3f) +
-                                            grid_r_.capacity() * sizeof(float) +
                                             grid_v_.capacity() * sizeof(const StoredVertex*));
 }
 
@@ -399,9 +396,8 @@ SampledSpectrum VcmRender::merge(const PathContext& ctx, Scratch& sc, int t, Sam
     const float p_cam_z = z.pdf_fwd;
     SampledSpectrum sum_l(0.0f), sum_l_terminated(0.0f);
     *terminated = SampledSpectrum(0.0f);
-    grid_.for_candidates(z.p, [&](std::uint32_t gi) {
+    grid_.for_within(z.p, [&](std::uint32_t gi) {
         const StoredVertex& y = *grid_v_[gi];
-        if (length_squared(y.v.p - z.p) > r2) return;
         const int j = int(y.index);
         if (j > j_max) return;
         ++*merges;
