@@ -21,9 +21,8 @@ inline constexpr std::size_t kChunkPixels = 1024;
 inline constexpr std::size_t kWaveChunks = 64;
 
 // trace(out, sample, p0, p1) traces pixels [p0, p1) at one (global) sample index into `out` (cleared by
-// it); apply(out) adds an output to the film; snapshot(k) is the image after k passes, for a preview. Runs
-// this process's share of options.spp passes, or whole passes until options.time_budget (run_passes); returns
-// the passes taken. `progress` counts pixel samples.
+// it); apply(out) adds an output to the film; snapshot(k) is the image after k passes, for a preview. Runs this process's share of options.spp passes, or whole
+// passes until options.time_budget (run_passes); returns the passes taken. `progress` counts pixel samples.
 template <class Output, class Trace, class Apply, class Snapshot>
 int run_chunked_schedule(const RenderOptions& options, std::size_t pixels, tbb::task_arena& arena,
                          Progress& progress, Trace&& trace, Apply&& apply, Snapshot&& snapshot) {
@@ -60,10 +59,9 @@ int run_chunked_schedule(const RenderOptions& options, std::size_t pixels, tbb::
         apply_wave(waves[1 - cur]);
     };
     // This process's passes k0..k1-1 are its chunks [k0 · chunks_per_pass, k1 · chunks_per_pass).
-    int passes = run_passes(
-        options, progress,
-        [&](int k0, int k1) { run(std::size_t(k0) * chunks_per_pass, std::size_t(k1) * chunks_per_pass); },
-        snapshot);
+    int passes = run_passes(options, progress, [&](int k0, int k1) {
+        run(std::size_t(k0) * chunks_per_pass, std::size_t(k1) * chunks_per_pass);
+    }, snapshot);
     progress.finish();
     return passes;
 }
