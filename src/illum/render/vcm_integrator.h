@@ -33,6 +33,12 @@
 // is on surfaces only (no volume photon beams or points), so medium vertices take part in the weights as
 // vertices where no merging happens. Media's own emission is not collected (as BDPT).
 //
+// Memory: the light vertices of an iteration are kept as path vertices without their BSDFs (rebuilt from the
+// stored hit in the camera thread's arena when a connection needs one), in per-chunk arrays that are
+// cleared, not freed, between iterations, as are the grid's; a subpath's own vertices live in per-thread
+// arrays made once. After the first iteration the render loop allocates nothing (but where an iteration
+// stores more vertices than any before it). `illum render` prints the arrays' and the grid's size.
+//
 // Determinism: the light pass traces fixed chunks of subpaths, each chunk into its own arrays of vertices
 // and splats; the camera pass traces fixed chunks of pixels into their own estimate and splat lists; both
 // are applied in chunk order. Subpath p of iteration i draws from the Sobol stream of (seed, p, i) (light
