@@ -371,5 +371,32 @@ TEST_F(CornellVcm, MatchesSpectralReference) {
     expect_means(render_cornell(64, 1, true, 48), render_cornell(64, 2, true, 48), ref, "vcm spectral");
 }
 
+// Per pixel against the path tracer at 40²: d = (A - P)² - (A - B)²/2 - (P - Q)²/2 averages to zero when the
+// two differ by noise only (A, B vcm; P, Q path; independent seeds; lightpath_test.cpp's check). Merging's
+// blur (about a pixel) would show here where merging carries weight.
+TEST_F(CornellVcm, PerPixelConsistentWithPathTracer) {
+    const int res = 40;
+    Image a = render_cornell(32, 1, false, res), b = render_cornell(32, 2, false, res);
+    Image p = test::render_shared_scene("cornell-box", 64, 3, res, false, "path"),
+          q = test::render_shared_scene("cornell-box", 64, 4, res, false, "path");
+    const std::size_t n = a.pixel_count();
+    for (int c = 0; c < 3; ++c) {
+        double sum = 0, sum2 = 0, mse = 0, noise = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            double ap = a.data()[i][c] - p.data()[i][c], ab = a.data()[i][c] - b.data()[i][c],
+                   pq = p.data()[i][c] - q.data()[i][c];
+            double d = ap * ap - 0.5 * ab * ab - 0.5 * pq * pq;
+            sum += d;
+            sum2 += d * d;
+            mse += ap * ap;
+            noise += 0.5 * ab * ab + 0.5 * pq * pq;
+        }
+        double mean = sum / n, se = std::sqrt((sum2 / n - mean * mean) / (n - 1));
+        std::printf("channel %d: MSE(vcm, path) / expected noise = %.3f; d = %.3g +- %.2g\n", c, mse / noise,
+                    mean, se);
+        EXPECT_LT(std::abs(mean), kSigmas * se) << "channel " << c;
+    }
+}
+
 } // namespace
 } // namespace illum
