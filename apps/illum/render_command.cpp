@@ -6,9 +6,9 @@
 #include <fmt/core.h>
 #include <fstream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <thread>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include "commands.h"
@@ -203,8 +203,7 @@ void run(const RenderArgs& args) {
         if (error.empty()) error = "failed";
     }
     MpiRun::agree(error);
-    const double setup_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // The live preview: rank 0's, of its own share in a job of several ranks.
     std::unique_ptr<PreviewServer> server;
@@ -236,14 +235,13 @@ void run(const RenderArgs& args) {
     }
     if (!args.quiet)
         fmt::print(stderr, "{}x{}, {} spp in {:.2f} s: {:.3g} samples/s, {:.3g} rays/s on {}{} threads\n",
-                   p.scene->width, p.scene->height, result.spp, result.seconds,
-                   result.samples / result.seconds, result.rays / result.seconds,
-                   ranks > 1 ? fmt::format("{} ranks of ", ranks) : "", result.threads);
+                   p.scene->width, p.scene->height, result.spp, result.seconds, result.samples / result.seconds,
+                   result.rays / result.seconds, ranks > 1 ? fmt::format("{} ranks of ", ranks) : "",
+                   result.threads);
     if (server) {
         server->finish();
         if (args.serve_linger > 0) {
-            if (!args.quiet)
-                fmt::print(stderr, "preview: serving the final image for {} s\n", args.serve_linger);
+            if (!args.quiet) fmt::print(stderr, "preview: serving the final image for {} s\n", args.serve_linger);
             std::this_thread::sleep_for(std::chrono::duration<double>(args.serve_linger));
         }
         server->stop();
@@ -266,13 +264,12 @@ void add_render_command(CLI::App& app) {
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
         ->check(positive_integer());
     cmd->add_option("--seed", args->seed, "Seed of the sample sequences");
-    cmd->add_option(
-        "--integrator", args->integrator,
-        "path, volpath, bdpt, direct, albedo, normal, lightpath, sppm or vcm (default: the scene's). "
-        "vcm (vertex connection and merging) takes from the scene's Integrator directive "
-        "maxdepth, photonsperiteration (-1: pixels), radius (world units; default the scene's "
-        "bounding radius over the image's larger side), alpha (0.75), mode (vcm, vc or vm) and "
-        "misheuristic (balance or power)");
+    cmd->add_option("--integrator", args->integrator,
+                    "path, volpath, bdpt, direct, albedo, normal, lightpath, sppm or vcm (default: the "
+                    "scene's). vcm (vertex connection and merging) takes from the scene's Integrator "
+                    "directive maxdepth, photonsperiteration (-1: pixels), radius (world units; default the "
+                    "scene's bounding radius over the image's larger side), alpha (0.75), mode (vcm, vc or "
+                    "vm) and misheuristic (balance or power)");
     cmd->add_option("--max-depth", args->max_depth,
                     "Maximum number of scattering events (default: the scene's)")
         ->check(CLI::Range(-1, 100000));
@@ -286,10 +283,9 @@ void add_render_command(CLI::App& app) {
     cmd->add_flag("--spectral", args->spectral,
                   "Render with four sampled wavelengths per camera sample (hero wavelength sampling) instead "
                   "of RGB");
-    cmd->add_option(
-        "--share", args->share,
-        "Render only share RANK/RANKS of the samples, as that rank of an mpirun job would (to time "
-        "a large job's ranks one by one; the image is that share's alone)");
+    cmd->add_option("--share", args->share,
+                    "Render only share RANK/RANKS of the samples, as that rank of an mpirun job would (to time "
+                    "a large job's ranks one by one; the image is that share's alone)");
     cmd->add_option("--serve", args->serve,
                     "Serve a live preview page at HOST:PORT or PORT (on 127.0.0.1; port 0 picks a free one) "
                     "while rendering");

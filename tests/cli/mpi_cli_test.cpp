@@ -27,9 +27,9 @@ const std::string kMpiexec = ILLUM_MPIEXEC;
 // than cores.
 bool open_mpi() {
     static const bool is = [] {
-        CliRun r = cli_support::run_in("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 '" +
-                                           kMpiexec + "' --version",
-                                       fs::temp_directory_path());
+        CliRun r = cli_support::run_in(
+            "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 '" + kMpiexec + "' --version",
+            fs::temp_directory_path());
         std::string text = r.out + r.err;
         return text.find("OpenRTE") != std::string::npos || text.find("Open MPI") != std::string::npos;
     }();
@@ -38,8 +38,7 @@ bool open_mpi() {
 
 std::string mpirun(int ranks) {
     std::string env = open_mpi() ? "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " : "";
-    return env + "'" + kMpiexec + "'" + (open_mpi() ? " --oversubscribe" : "") + " -np " +
-           std::to_string(ranks);
+    return env + "'" + kMpiexec + "'" + (open_mpi() ? " --oversubscribe" : "") + " -np " + std::to_string(ranks);
 }
 
 const std::string kIllum = std::string("'") + ILLUM_CLI_PATH + "'";
@@ -114,8 +113,7 @@ TEST_F(MpiCli, TimeBudgetIsShared) {
 TEST_F(MpiCli, BadSceneOnOneRankEndsTheJob) {
     fs::create_directories(dir_ / "good");
     fs::create_directories(dir_ / "bad");
-    write_text(dir_ / "good" / "scene.pbrt",
-               R"(Film "rgb" "integer xresolution" [16] "integer yresolution" [16]
+    write_text(dir_ / "good" / "scene.pbrt", R"(Film "rgb" "integer xresolution" [16] "integer yresolution" [16]
 Camera "perspective"
 WorldBegin
 LightSource "point" "rgb I" [1 1 1]
@@ -146,21 +144,16 @@ TEST_F(MpiCli, StoppedRankEndsTheJob) {
         write_text(dir_ / "out.exr", "the previous image");
         const std::string token = "mpi-stop-" + std::to_string(::getpid());
         // Rank 1 is the illum process whose environment says so; it is stopped after a second of rendering.
-        std::string script =
-            mpirun(2) + " " + kIllum + " render --time 60 --threads 1 -q -o out.exr --seed 7" + " --stats " +
-            token + ".json & job=$!\n" +
-            "victim=; for i in $(seq 100); do\n"
-            "  for d in /proc/[0-9]*; do\n"
-            "    if tr '\\0' ' ' < $d/cmdline 2>/dev/null | grep -q " +
-            token +
-            " &&\n"
-            "       grep -qz '^OMPI_COMM_WORLD_RANK=1$' $d/environ 2>/dev/null; then victim=${d#/proc/}; fi\n"
-            "  done; [ -n \"$victim\" ] && break; sleep 0.1\n"
-            "done\n"
-            "sleep 1; start=$(date +%s%N); kill -" +
-            signal +
-            " $victim; wait $job; rc=$?\n"
-            "echo \"rc=$rc ms=$(( ($(date +%s%N) - start) / 1000000 ))\"\n";
+        std::string script = mpirun(2) + " " + kIllum + " render --time 60 --threads 1 -q -o out.exr --seed 7" +
+                             " --stats " + token + ".json & job=$!\n" +
+                             "victim=; for i in $(seq 100); do\n"
+                             "  for d in /proc/[0-9]*; do\n"
+                             "    if tr '\\0' ' ' < $d/cmdline 2>/dev/null | grep -q " + token + " &&\n"
+                             "       grep -qz '^OMPI_COMM_WORLD_RANK=1$' $d/environ 2>/dev/null; then victim=${d#/proc/}; fi\n"
+                             "  done; [ -n \"$victim\" ] && break; sleep 0.1\n"
+                             "done\n"
+                             "sleep 1; start=$(date +%s%N); kill -" + signal + " $victim; wait $job; rc=$?\n"
+                             "echo \"rc=$rc ms=$(( ($(date +%s%N) - start) / 1000000 ))\"\n";
         write_text(dir_ / "stop.sh", script);
         CliRun r = run("bash stop.sh");
         int rc = -1, ms = -1;
@@ -181,8 +174,7 @@ TEST_F(MpiCli, ShareAlone) {
     CliRun bad = run(kIllum + " render --resolution 16x16 --spp 8 --share 64/64 -q -o share.exr");
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_NE(bad.err.find("--share \"64/64\""), std::string::npos) << bad.err;
-    CliRun both =
-        run(mpirun(2) + " " + kIllum + " render --resolution 16x16 --spp 8 --share 0/2 -q -o s.exr");
+    CliRun both = run(mpirun(2) + " " + kIllum + " render --resolution 16x16 --spp 8 --share 0/2 -q -o s.exr");
     EXPECT_EQ(both.exit_code, 2);
     EXPECT_NE(both.err.find("cannot be used under mpirun"), std::string::npos) << both.err;
 }

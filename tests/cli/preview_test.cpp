@@ -25,7 +25,9 @@ using cli_support::read_bytes;
 
 class Preview : public testing::Test {
 protected:
-    void SetUp() override { dir_ = cli_support::fresh_test_folder("preview"); }
+    void SetUp() override {
+        dir_ = cli_support::fresh_test_folder("preview");
+    }
     void TearDown() override { fs::remove_all(dir_); }
 
     // Starts `illum render ARGS --serve 0` in the background, waits for its "preview: URL" line and
@@ -39,8 +41,7 @@ protected:
         pclose(p);
         for (int i = 0; i < 200; ++i) {
             std::string err = read_bytes(dir_ / "render.err");
-            if (auto at = err.find("preview: ");
-                at != std::string::npos && err.find('\n', at) != std::string::npos)
+            if (auto at = err.find("preview: "); at != std::string::npos && err.find('\n', at) != std::string::npos)
                 return err.substr(at + 9, err.find('\n', at) - at - 9);
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
         }
@@ -140,12 +141,12 @@ TEST_F(Preview, LeavesTheImageAlone) {
 }
 
 TEST_F(Preview, BadAddressIsAnError) {
-    cli_support::CliRun r =
-        cli_support::illum("render --resolution 8x8 --spp 1 --serve 127.0.0.1:99999 -o o.exr", dir_);
+    cli_support::CliRun r = cli_support::illum("render --resolution 8x8 --spp 1 --serve 127.0.0.1:99999 -o o.exr",
+                                               dir_);
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("--serve \"127.0.0.1:99999\""), std::string::npos) << r.err;
-    cli_support::CliRun r2 =
-        cli_support::illum("render --resolution 8x8 --spp 1 --serve 192.0.2.1:8080 -o o.exr", dir_);
+    cli_support::CliRun r2 = cli_support::illum("render --resolution 8x8 --spp 1 --serve 192.0.2.1:8080 -o o.exr",
+                                                dir_);
     EXPECT_EQ(r2.exit_code, 2);
     EXPECT_NE(r2.err.find("cannot serve the preview on 192.0.2.1:8080"), std::string::npos) << r2.err;
 }
@@ -159,10 +160,9 @@ TEST_F(Preview, ChromiumSeesTheImageConverge) {
     if (!chromium) GTEST_SKIP() << "no Chromium (scripts/setup.sh installs Debian's)";
     std::string url = start("--resolution 128x96 --spp 512 --serve-linger 30 -q -o out.exr");
     ASSERT_FALSE(url.empty()) << read_bytes(dir_ / "render.err");
-    std::string cmd = std::string("'") + chromium +
-                      "' --headless --no-sandbox --disable-gpu --no-first-run " + "--user-data-dir='" +
-                      (dir_ / "profile").string() + "' --virtual-time-budget=120000 --dump-dom '" + url +
-                      "?probe=64,40'";
+    std::string cmd = std::string("'") + chromium + "' --headless --no-sandbox --disable-gpu --no-first-run " +
+                      "--user-data-dir='" + (dir_ / "profile").string() +
+                      "' --virtual-time-budget=120000 --dump-dom '" + url + "?probe=64,40'";
     cli_support::CliRun r = cli_support::run_in(cmd, dir_);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     auto element = [&](const std::string& id) {
@@ -176,9 +176,7 @@ TEST_F(Preview, ChromiumSeesTheImageConverge) {
     EXPECT_GE(frames, 2) << "the image must update while rendering\n" << r.out;
     int x = -1, y = -1, spp = 0;
     float rgb[3] = {-1, -1, -1};
-    ASSERT_EQ(
-        std::sscanf(element("probe").c_str(), "%d %d %f %f %f %d", &x, &y, &rgb[0], &rgb[1], &rgb[2], &spp),
-        6)
+    ASSERT_EQ(std::sscanf(element("probe").c_str(), "%d %d %f %f %f %d", &x, &y, &rgb[0], &rgb[1], &rgb[2], &spp), 6)
         << r.out;
     EXPECT_EQ(x, 64);
     EXPECT_EQ(y, 40);

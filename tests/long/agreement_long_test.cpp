@@ -6,7 +6,8 @@
 // variance + 4.5 of its standard errors. SPPM is consistent rather than unbiased: its photons are gathered
 // over a radius, so its pixels are a blur of the exact ones until the radius has shrunk; it is held to the
 // means only, and its per-pixel figure is printed. VCM merges over a radius too, but only where merging
-// has most of the MIS weight (caustics); with its default radius (about a pixel's footprint) it is held to both.
+// has most of the MIS weight (caustics); with its default radius (about a pixel's footprint) it is held to
+// both.
 #include <gtest/gtest.h>
 
 #include <cstdio>

@@ -27,8 +27,8 @@ bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, Thre
 
 // Adding an integrator: its file, and one line here and in integrator_names().
 const std::vector<std::string>& integrator_names() {
-    static const std::vector<std::string> names = {"path",   "volpath",   "direct", "albedo",
-                                                   "normal", "lightpath", "sppm",   "bdpt", "vcm"};
+    static const std::vector<std::string> names = {"path",      "volpath", "direct", "albedo", "normal",
+                                                   "lightpath", "sppm",    "bdpt",   "vcm"};
     return names;
 }
 
@@ -59,8 +59,8 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene
     }
     if (name == "vcm") {
         const RenderRequest& r = scene.request;
-        VcmSettings v{max_depth, r.vcm_light_paths, r.vcm_radius, r.vcm_alpha, VcmSettings::Mode::VCM,
-                      r.vcm_power_heuristic};
+        VcmSettings v{max_depth,   r.vcm_light_paths,      r.vcm_radius,
+                      r.vcm_alpha, VcmSettings::Mode::VCM, r.vcm_power_heuristic};
         if (!parse_vcm_mode(r.vcm_mode, &v.mode)) throw Error("vcm mode must be \"vcm\", \"vc\" or \"vm\"");
         return std::make_unique<VCMIntegrator>(scene, v);
     }
