@@ -124,7 +124,7 @@ private:
     void camera_pass(int sample_index, tbb::task_arena& arena);
     void trace_camera(int x, int y, int sample_index, ThreadContext& tc, Scratch& sc, std::uint64_t* merges,
                       int* dropped);
-    SampledSpectrum connect(const PathContext& ctx, Scratch& sc, int s, int t, int n_light, bool light0_delta,
+    SampledSpectrum connect(const PathContext& ctx, Scratch& sc, int s, int t, bool light0_delta,
                             int ch) const;
     // Returns the merges with subpaths of all wavelengths; those with subpaths whose secondary wavelengths
     // were terminated go to *terminated instead.
@@ -302,11 +302,10 @@ void VcmRender::build_grid() {
                                             grid_v_.capacity() * sizeof(const StoredVertex*));
 }
 
-// VC strategy (s, t >= 2) between the camera subpath and its paired light subpath (sc.light, n_light
-// vertices): its MIS-weighted contribution (bdpt_integrator.cpp's connect, with VCM's weights).
-SampledSpectrum VcmRender::connect(const PathContext& ctx, Scratch& sc, int s, int t, int n_light,
-                                   bool light0_delta, int ch) const {
-    (void)n_light;
+// VC strategy (s, t >= 2) between the camera subpath and its paired light subpath (sc.light): its
+// MIS-weighted contribution (bdpt_integrator.cpp's connect, with VCM's weights).
+SampledSpectrum VcmRender::connect(const PathContext& ctx, Scratch& sc, int s, int t, bool light0_delta,
+                                   int ch) const {
     PathVertex* lv = sc.light.data();
     PathVertex* cv = sc.camera.data();
     Sampler& sampler = ctx.tc.sampler;
@@ -499,7 +498,7 @@ void VcmRender::trace_camera(int x, int y, int sample_index, ThreadContext& tc, 
     for (int t = 2; t <= n_camera; ++t) {
         const int s_max = techniques_.vc ? std::min(n_light, max_depth_ + 2 - t) : 0;
         for (int s = 0; s <= s_max; ++s) {
-            SampledSpectrum c = connect(ctx, sc, s, t, n_light, light0_delta, ch);
+            SampledSpectrum c = connect(ctx, sc, s, t, light0_delta, ch);
             if (c.is_black()) continue;
             if (!c.is_finite() || c.has_negative()) {
                 ++*dropped;
