@@ -281,7 +281,11 @@ void add_render_command(CLI::App& app) {
                     "Seed of the sample sequences (default: the scene's Sampler \"seed\", else its Option "
                     "\"seed\", else 0)");
     cmd->add_option("--integrator", args->integrator,
-                    "path, volpath, bdpt, direct, albedo, normal, lightpath or sppm (default: the scene's)");
+                    "path, volpath, bdpt, direct, albedo, normal, lightpath, sppm or vcm (default: the "
+                    "scene's). vcm (vertex connection and merging) takes from the scene's Integrator "
+                    "directive maxdepth, photonsperiteration (-1: pixels), radius (world units; default the "
+                    "scene's bounding radius over the image's larger side), alpha (0.75), mode (vcm, vc or "
+                    "vm) and misheuristic (balance or power)");
     cmd->add_option("--max-depth", args->max_depth,
                     "Maximum number of scattering events (default: the scene's)")
         ->check(CLI::Range(-1, 100000));

@@ -130,7 +130,7 @@ TEST_F(Preview, ServesTheRenderWhileItRuns) {
 // With a preview the loops render in passes of one sample per pixel; the samples, and so the image, are the
 // same as without one.
 TEST_F(Preview, LeavesTheImageAlone) {
-    for (std::string integrator : {"path", "bdpt", "lightpath", "sppm"}) {
+    for (std::string integrator : {"path", "bdpt", "lightpath", "sppm", "vcm"}) {
         SCOPED_TRACE(integrator);
         std::string args = "render --resolution 24x16 --spp 5 --seed 3 -q --integrator " + integrator;
         ASSERT_EQ(cli_support::illum(args + " -o plain.exr", dir_).exit_code, 0);

@@ -5,6 +5,7 @@
 
 #include "illum/render/integrator.h"
 #include "illum/render/sampler.h"
+#include "illum/render/vcm_integrator.h"
 
 namespace illum {
 
@@ -35,6 +36,27 @@ RenderRequest create_render_request(const EntityDesc& in, const EntityDesc& s, D
         r.sppm_radius = in.params.get_float("radius", 1);
         if (!(r.sppm_radius > 0)) throw Error(in.loc, "radius must be positive");
         r.sppm_seed = in.params.get_int("seed", 6502);
+    }
+    if (r.integrator == "vcm") {
+        // pbrt-v4 has no vcm: the names follow its sppm and bdpt (vcm_integrator.h).
+        r.vcm_light_paths = in.params.get_int("photonsperiteration", -1);
+        if (r.vcm_light_paths == 0 || r.vcm_light_paths < -1)
+            throw Error(in.params.find("photonsperiteration")->loc,
+                        "photonsperiteration must be positive or -1 (the pixel count)");
+        r.vcm_radius = in.params.get_float("radius", -1);
+        if (in.params.find("radius") && !(r.vcm_radius > 0))
+            throw Error(in.params.find("radius")->loc, "radius must be positive");
+        r.vcm_alpha = in.params.get_float("alpha", 0.75f);
+        if (!(r.vcm_alpha > 0 && r.vcm_alpha <= 1))
+            throw Error(in.params.find("alpha")->loc, "alpha must be in (0, 1]");
+        r.vcm_mode = in.params.get_string("mode", "vcm");
+        VcmSettings::Mode mode;
+        if (!parse_vcm_mode(r.vcm_mode, &mode))
+            throw Error(in.params.find("mode")->loc, "mode must be \"vcm\", \"vc\" or \"vm\"");
+        std::string heuristic = in.params.get_string("misheuristic", "balance");
+        if (heuristic != "balance" && heuristic != "power")
+            throw Error(in.params.find("misheuristic")->loc, "misheuristic must be \"balance\" or \"power\"");
+        r.vcm_power_heuristic = heuristic == "power";
     }
     if (r.integrator == "bdpt") {
         r.bdpt_visualize_strategies = in.params.get_bool("visualizestrategies", false);

@@ -9,6 +9,7 @@
 #include "illum/render/lightpath_integrator.h"
 #include "illum/render/path_integrator.h"
 #include "illum/render/sppm_integrator.h"
+#include "illum/render/vcm_integrator.h"
 #include "illum/render/volpath_caustics.h"
 #include "illum/render/volpath_integrator.h"
 #include "illum/util/error.h"
@@ -27,8 +28,8 @@ bool Integrator::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, Thre
 
 // Adding an integrator: its file, and one line here and in integrator_names().
 const std::vector<std::string>& integrator_names() {
-    static const std::vector<std::string> names = {"path",   "volpath",   "direct", "albedo",
-                                                   "normal", "lightpath", "sppm",   "bdpt"};
+    static const std::vector<std::string> names = {"path",      "volpath", "direct", "albedo", "normal",
+                                                   "lightpath", "sppm",    "bdpt",   "vcm"};
     return names;
 }
 
@@ -57,8 +58,15 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene
             scene,
             SppmSettings{max_depth, r.sppm_photons_per_iteration, r.sppm_radius, std::uint64_t(r.sppm_seed)});
     }
+    if (name == "vcm") {
+        const RenderRequest& r = scene.request;
+        VcmSettings v{max_depth,   r.vcm_light_paths,      r.vcm_radius,
+                      r.vcm_alpha, VcmSettings::Mode::VCM, r.vcm_power_heuristic};
+        if (!parse_vcm_mode(r.vcm_mode, &v.mode)) throw Error("vcm mode must be \"vcm\", \"vc\" or \"vm\"");
+        return std::make_unique<VCMIntegrator>(scene, v);
+    }
     throw Error("unknown integrator \"" + name +
-                "\" (use path, volpath, direct, albedo, normal, lightpath, sppm or bdpt)");
+                "\" (use path, volpath, direct, albedo, normal, lightpath, sppm, bdpt or vcm)");
 }
 
 } // namespace illum

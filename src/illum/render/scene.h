@@ -52,6 +52,14 @@ struct RenderRequest {
     // contribution (visualizestrategies) or its MIS-weighted one (visualizeweights, which wins if both).
     bool bdpt_visualize_strategies = false;
     bool bdpt_visualize_weights = false;
+    // Integrator "vcm" (vcm_integrator.h): light subpaths per iteration (-1: the pixel count), the initial
+    // merging radius (<= 0: from the scene's size), the radius exponent α, the techniques ("vcm", "vc",
+    // "vm") and the heuristic (power or balance).
+    long long vcm_light_paths = -1;
+    float vcm_radius = -1;
+    float vcm_alpha = 0.75f;
+    std::string vcm_mode = "vcm";
+    bool vcm_power_heuristic = false;
 };
 
 class Scene {
