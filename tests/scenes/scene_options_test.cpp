@@ -22,7 +22,7 @@ LightSource "infinite" "rgb L" [0.25 0.5 0.75]
 )";
 
 TEST(SceneOptions, BothSpellingsAreRead) {
-    // pbrt-v4's parser reads `Option "name" value`; its documentation writes `Option "type name" value`.
+    // pbrt-v4's parser reads `Option "name" value` (and rejects the typed form); illum reads both.
     auto a = build_text(std::string("Option \"integer seed\" 7\nOption \"bool disablepixeljitter\" true\n"
                                     "Option \"string rendercoordsys\" \"world\"\n") +
                         kEnvironment);
