@@ -3,6 +3,8 @@
 // ones are positioned errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "illum/scene/build.h"
 #include "illum/scene/pbrt/parser.h"
 #include "pbrt/test_util.h"
@@ -22,7 +24,7 @@ LightSource "infinite" "rgb L" [0.25 0.5 0.75]
 )";
 
 TEST(SceneOptions, BothSpellingsAreRead) {
-    // pbrt-v4's parser reads `Option "name" value`; its documentation writes `Option "type name" value`.
+    // pbrt-v4's parser reads `Option "name" value` (and rejects the typed form); illum reads both.
     auto a = build_text(std::string("Option \"integer seed\" 7\nOption \"bool disablepixeljitter\" true\n"
                                     "Option \"string rendercoordsys\" \"world\"\n") +
                         kEnvironment);
@@ -100,6 +102,12 @@ Material "conductor" "rgb reflectance" [0.5 0.5 0.5] "float roughness" 0
 Shape "bilinearmesh" "point3 P" [-5 -5 1  -5 5 1  5 -5 1  5 5 1]
 )";
     };
+    // Nothing scatters specularly any more (so volpath traces no caustics from the lights).
+    auto forced = build_text(scene(true));
+    for (const auto& m : forced->materials) EXPECT_FALSE(m->may_be_specular);
+    auto plain = build_text(scene(false));
+    EXPECT_TRUE(std::any_of(plain->materials.begin(), plain->materials.end(),
+                            [](const auto& m) { return m->may_be_specular; }));
     Image mirror = test::render_pbrt(scene(false)).image;
     Image diffuse = test::render_pbrt(scene(true)).image;
     for (int y = 0; y < 2; ++y)

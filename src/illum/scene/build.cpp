@@ -179,6 +179,8 @@ private:
         for (const Material*& m : materials_) wrap(m);
         for (auto& [name, m] : named_) wrap(m);
         wrap(default_material_);
+        // No surface scatters by a delta lobe now, so volpath traces no caustics from the lights.
+        for (auto& m : scene_->materials) m->may_be_specular = false;
     }
 
     const Material* material_of(const MaterialRef& ref, const SourceLocation& loc) {

@@ -664,7 +664,7 @@ private:
                 warn(loc, "ColorSpace after WorldBegin: one color space applies to the whole scene here");
         } else if (name == "Option") {
             // pbrt-v4's parser takes `Option "name" value` (the value a bare true/false, a number or a
-            // quoted string); its documentation writes `Option "type name" value`. Both are read.
+            // quoted string) and rejects the typed `Option "type name" value`; illum reads both.
             if (f.tok.peek().kind != TokenKind::String) read_string(f, d, "\"type name\" declaration");
             if (f.tok.peek().str.find_first_of(" \t\n") == std::string::npos) {
                 Token decl = f.tok.next();
