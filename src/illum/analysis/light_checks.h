@@ -23,10 +23,10 @@ namespace illum {
 VerifyCheck check_light_power(const Light& light, const std::string& name, const std::string& closed_form,
                               Color3 expected, int photons, const VerifyOptions& options,
                               double allowance = 1e-4);
-// power() against `expected`, to float rounding.
+// power() against `expected`, to float rounding (or `allowance` of it, for a power() found by quadrature).
 VerifyCheck check_light_power_method(const Light& light, const std::string& name,
                                      const std::string& closed_form, Color3 expected,
-                                     const VerifyOptions& options);
+                                     const VerifyOptions& options, double allowance = 1e-4);
 
 std::vector<VerifyCheck> check_light_powers(const VerifyOptions& options);
 
