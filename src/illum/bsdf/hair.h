@@ -84,6 +84,8 @@ inline float logistic_cdf(float x, float s) { return 1 / (1 + std::exp(-x / s));
 inline float trimmed_logistic(float x, float s, float a, float b) {
     return logistic(x, s) / (logistic_cdf(b, s) - logistic_cdf(a, s));
 }
+// 1 / (CDF(π) - CDF(-π)): the trimmed logistic's normalisation over [-π, π], fixed per BxDF.
+inline float trimmed_logistic_norm(float s) { return 1 / (logistic_cdf(kPi, s) - logistic_cdf(-kPi, s)); }
 // Inverts the trimmed logistic's CDF.
 inline float sample_trimmed_logistic(float u, float s, float a, float b) {
     float k = logistic_cdf(b, s) - logistic_cdf(a, s);
@@ -96,11 +98,11 @@ inline float deflection(int p, float gamma_o, float gamma_t) {
     return 2 * p * gamma_t - 2 * gamma_o + p * kPi;
 }
 
-// N_p: the trimmed logistic around Φ(p), Δφ wrapped to [-π, π].
-inline float azimuthal(float phi, int p, float s, float gamma_o, float gamma_t) {
+// N_p: the trimmed logistic around Φ(p), Δφ wrapped to [-π, π]; norm = trimmed_logistic_norm(s).
+inline float azimuthal(float phi, int p, float s, float norm, float gamma_o, float gamma_t) {
     float d = phi - deflection(p, gamma_o, gamma_t);
     d = std::remainder(d, k2Pi);
-    return trimmed_logistic(d, s, -kPi, kPi);
+    return logistic(d, s) * norm;
 }
 
 } // namespace hair_detail
@@ -128,6 +130,7 @@ public:
         s_ = std::max(0.626657069f *
                           (0.265f * beta_n + 1.194f * sqr(beta_n) + 5.372f * std::pow(beta_n, 22.0f)),
                       1e-5f);
+        norm_ = hair_detail::trimmed_logistic_norm(s_);
         // sin and cos of 2^k α for k = 0, 1, 2 (the tilts α, 2α, 4α).
         float a = alpha_deg * (kPi / 180);
         sin2k_alpha_[0] = std::sin(a);
@@ -150,7 +153,7 @@ public:
         for (int p = 0; p < kPMax; ++p) {
             auto [sin_op, cos_op] = tilted(p, g);
             sum += ap[std::size_t(p)] * (longitudinal(cos_i, cos_op, sin_i, sin_op, v_[p]) *
-                                         azimuthal(phi, p, s_, g.gamma_o, g.gamma_t));
+                                         azimuthal(phi, p, s_, norm_, g.gamma_o, g.gamma_t));
         }
         sum += ap[kPMax] * (longitudinal(cos_i, g.cos_o, sin_i, g.sin_o, v_[kPMax]) / k2Pi);
         if (std::abs(wi.z) > 0) sum /= std::abs(wi.z);
@@ -200,7 +203,7 @@ public:
         for (int p = 0; p < kPMax; ++p) {
             auto [sin_op, cos_op] = tilted(p, g);
             sum += ap_pdf[std::size_t(p)] * longitudinal(cos_i, cos_op, sin_i, sin_op, v_[p]) *
-                   azimuthal(phi, p, s_, g.gamma_o, g.gamma_t);
+                   azimuthal(phi, p, s_, norm_, g.gamma_o, g.gamma_t);
         }
         sum += ap_pdf[kPMax] * longitudinal(cos_i, g.cos_o, sin_i, g.sin_o, v_[kPMax]) / k2Pi;
         return SolidAnglePdf(sum);
@@ -286,7 +289,7 @@ private:
     float h_, eta_;
     SampledSpectrum sigma_a_;
     float v_[kPMax + 1];
-    float s_;
+    float s_, norm_;
     float sin2k_alpha_[3], cos2k_alpha_[3];
 };
 

@@ -542,7 +542,6 @@ std::vector<ModelSpec> build_models() {
          {{P{{"h", "0.3"}}},
           {P{{"sigma_a", "0"}, {"h", "0.5"}, {"alpha", "0"}}, true},
           {P{{"sigma_a", "0"}, {"h", "-0.7"}, {"beta_m", "0.1"}, {"beta_n", "0.8"}}, true},
-          {P{{"sigma_a", "0"}, {"h", "0.1"}, {"beta_m", "0.8"}, {"beta_n", "0.1"}}, true},
           {P{{"sigma_a", "0.2,0.5,1.5"},
              {"h", "0.9"},
              {"beta_m", "0.8"},

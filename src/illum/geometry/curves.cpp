@@ -209,7 +209,7 @@ std::unique_ptr<Curves> create_curves(const ShapeDesc& s, Diagnostics& diag) {
         float eps = 0.05f * scale * std::max(width0, width1);
         if (l0 > 0 && eps > 0) {
             double x = 1.41421356 * 6 * l0 / (8 * eps);
-            int r = x >= 1 ? std::min(int(std::log2(x)) / 2, 6) : 0;
+            int r = x >= 4096 ? 6 : (x >= 1 ? int(std::log2(x)) / 2 : 0); // 4096 = 4^6; an overflow too
             curves->tessellation = std::max(curves->tessellation, 1 << r);
         }
         // pbrt-v4: the curve's width interpolated linearly over the segments, by segment index.
