@@ -1,5 +1,6 @@
 #include "illum/geometry/analytic_shape.h"
 
+#include <algorithm>
 #include <array>
 
 namespace illum {
@@ -56,6 +57,18 @@ AnalyticShape::AnalyticShape(const Transform& world_from_object, bool flip_norma
 }
 
 void AnalyticShape::init_area() {
+    // The culling bounds: the world bounds widened by 1e-4 of their size and magnitude, far beyond the float
+    // rounding of the corners and of the slab test, so that no ray that crosses the surface is culled.
+    Bounds3f b = bounds();
+    if (!b.empty()) {
+        cull_valid_ = true;
+        for (int a = 0; a < 3; ++a) {
+            float pad = (b.hi[a] - b.lo[a] + std::max(std::abs(b.lo[a]), std::abs(b.hi[a]))) * 1e-4f;
+            cull_.lo[a] = b.lo[a] - pad;
+            cull_.hi[a] = b.hi[a] + pad;
+            cull_valid_ = cull_valid_ && std::isfinite(cull_.lo[a]) && std::isfinite(cull_.hi[a]);
+        }
+    }
     if (similarity_) {
         area_ = float(scale_ * scale_ * object_area());
         return;
@@ -150,7 +163,27 @@ Bounds3f AnalyticShape::bounds() const {
     return b;
 }
 
+// The slab test of the ray against the culling bounds (PBR 4th ed. §6.1.2): each axis clips the parametric
+// interval; a zero direction component gives ±inf (or NaN, which the comparisons leave out), and t_far is
+// widened by 1 + 2γ3 against the rounding of the two products.
+bool AnalyticShape::misses_bounds(const Ray& ray, float tmin, float tmax) const {
+    float t0 = tmin, t1 = tmax;
+    for (int a = 0; a < 3; ++a) {
+        float inv = 1 / ray.d[a];
+        float t_near = (cull_.lo[a] - ray.o[a]) * inv, t_far = (cull_.hi[a] - ray.o[a]) * inv;
+        if (t_near > t_far) std::swap(t_near, t_far);
+        t_far *= 1 + 2 * float(gamma_bound(3));
+        t0 = t_near > t0 ? t_near : t0;
+        t1 = t_far < t1 ? t_far : t1;
+        if (t0 > t1) return true;
+    }
+    return false;
+}
+
 int AnalyticShape::crossings(const Ray& ray, float tmin, float tmax, Crossing out[2]) const {
+    // Embree calls a user geometry of one primitive for every ray it traces (the primitive's BVH is a
+    // single leaf, whose box it does not test), so most rays end here, before the double-precision roots.
+    if (cull_valid_ && misses_bounds(ray, tmin, tmax)) return 0;
     Vec3d o = to_object(ray.o), d = to_object(ray.d);
     double t[2];
     int n = roots(o, d, t), count = 0;

@@ -96,7 +96,7 @@ protected:
         Vec3d dpdu; // ∂p/∂u
         Point2f uv; // pbrt's parameterisation
     };
-    // Call at the end of the derived constructor: computes the world area.
+    // Call at the end of the derived constructor: computes the world area and the culling bounds.
     void init_area();
     // The world point, error bound, normal and uv of the surface point nearest to object point p.
     ShapePoint world_sample(Vec3d p) const;
@@ -136,6 +136,10 @@ private:
     double scale_ = 1, det_ = 1;
     float area_ = 0;
     const FloatTexture* alpha_ = nullptr;
+    // World bounds, widened against rounding, that crossings() tests before its double-precision roots.
+    Bounds3f cull_;
+    bool cull_valid_ = false;
+    bool misses_bounds(const Ray& ray, float tmin, float tmax) const;
 };
 
 } // namespace illum

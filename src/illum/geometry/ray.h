@@ -3,7 +3,9 @@
 // leave nor pass through nearby geometry (Pharr, Jakob & Humphreys, PBR 4th ed., §6.8).
 #pragma once
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "illum/math/vector.h"
@@ -35,8 +37,22 @@ struct Ray {
 // instructions on the Cornell box).
 static_assert(sizeof(Ray) == 8 * sizeof(float) + sizeof(void*), "Ray grew");
 
-inline float next_float_up(float v) { return std::nextafter(v, kInfinity); }
-inline float next_float_down(float v) { return std::nextafter(v, -kInfinity); }
+// The adjacent floats, by stepping the bit pattern (PBR 4th ed. §6.8.2): the same values as std::nextafter
+// towards ±infinity, without its library call (about 1% of a volumetric render's instructions).
+inline float next_float_up(float v) {
+    if (std::isinf(v) && v > 0) return v;
+    if (v == 0) v = 0; // -0 steps up like +0
+    std::uint32_t bits = std::bit_cast<std::uint32_t>(v);
+    bits = v >= 0 ? bits + 1 : bits - 1;
+    return std::bit_cast<float>(bits);
+}
+inline float next_float_down(float v) {
+    if (std::isinf(v) && v < 0) return v;
+    if (v == 0) v = -0.0f; // +0 steps down like -0
+    std::uint32_t bits = std::bit_cast<std::uint32_t>(v);
+    bits = v > 0 ? bits - 1 : bits + 1;
+    return std::bit_cast<float>(bits);
+}
 
 // Moves p off the surface with normal n, on the side of w, past its error bound p_error. Each coordinate
 // is then rounded one ulp further along the (signed) normal, so the origin leaves the surface even where

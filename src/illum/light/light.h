@@ -91,6 +91,10 @@ public:
     virtual AreaPdf pdf_le_position(const SurfaceHit&) const { return AreaPdf(0); }
     // A point or spot light's position (for sampling distances towards it in media); none for the others.
     virtual std::optional<Point3f> position() const { return std::nullopt; }
+    // Narrows [*t0, *t1] to the part of the line o + t d (unit d) that the light can reach directly (a spot
+    // light's cone); false when none of it. Equiangular sampling in media samples only there. The default
+    // keeps the whole interval.
+    virtual bool illuminated_interval(Point3f, Vector3f, float*, float*) const { return true; }
     // Photon emission: an origin from u1 and a direction from u2 (see LightLeSample); nullopt when the
     // light emits nothing there. Infinite and directional lights need preprocess() first.
     virtual std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,

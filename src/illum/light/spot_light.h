@@ -5,6 +5,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "illum/light/light.h"
 #include "illum/math/frame.h"
@@ -23,6 +25,7 @@ public:
         float start = std::clamp(cone_angle - cone_delta, 0.0f, cone_angle);
         cos_end_ = std::cos(cone_angle);
         cos_start_ = std::cos(start);
+        cos_clip_ = std::cos(std::min(cone_angle + 1e-3f, kPi));
     }
 
     // The falloff factor in [0, 1] for a direction cos θ from the axis.
@@ -52,6 +55,57 @@ public:
         return SolidAnglePdf(0);
     }
     std::optional<Point3f> position() const override { return position_; }
+    // The line's stretch inside the cone θ <= θ_end (widened by 1e-3 rad against rounding): with
+    // w = m + t d, m = o - c, the cone is (w·a)² >= cos² |w|² on the nappe w·a >= 0, a quadratic
+    // A t² + 2 B t + C >= 0 and a half-line. A cone of at most 90° is convex, so the stretch is one interval.
+    bool illuminated_interval(Point3f o, Vector3f d, float* t0, float* t1) const override {
+        if (cos_clip_ <= 0) return true; // wider than a half-space: not convex, not narrowed
+        Vector3f m = o - position_;
+        const Vector3f& a = frame_.n;
+        double ma = dot(m, a), da = dot(d, a), c2 = double(cos_clip_) * cos_clip_;
+        double qa = da * da - c2 * dot(d, d), qb = ma * da - c2 * dot(m, d), qc = ma * ma - c2 * dot(m, m);
+        // The nappe's half-line: ma + t da >= 0.
+        double lo = -std::numeric_limits<double>::infinity(), hi = -lo;
+        if (da > 0)
+            lo = -ma / da;
+        else if (da < 0)
+            hi = -ma / da;
+        else if (ma < 0)
+            return false;
+        // Where the quadratic is >= 0, intersected with the half-line.
+        double disc = qb * qb - qa * qc;
+        if (qa < 0) {
+            if (disc < 0) return false;
+            double r = std::sqrt(disc), q = -(qb + std::copysign(r, qb));
+            double ra = q / qa, rb = q != 0 ? qc / q : ra;
+            lo = std::max(lo, std::min(ra, rb));
+            hi = std::min(hi, std::max(ra, rb));
+        } else if (qa > 0 && disc > 0) {
+            // Outside the roots: the half-line keeps the part on this nappe's side.
+            double r = std::sqrt(disc), q = -(qb + std::copysign(r, qb));
+            double ra = q / qa, rb = q != 0 ? qc / q : ra;
+            double r0 = std::min(ra, rb), r1 = std::max(ra, rb);
+            // The half-line contains one of (-inf, r0] and [r1, inf) (a ray along the cone's line, both).
+            if (hi <= r1)
+                hi = std::min(hi, r0);
+            else
+                lo = std::max(lo, r1);
+        } else if (qa == 0 && qb != 0) {
+            // Parallel to the cone's surface: the linear 2 B t + C >= 0.
+            double r = -qc / (2 * qb);
+            if (qb > 0)
+                lo = std::max(lo, r);
+            else
+                hi = std::min(hi, r);
+        } else if (qa == 0 && qc < 0) {
+            return false;
+        }
+        double a0 = std::max(lo, double(*t0)), a1 = std::min(hi, double(*t1));
+        if (!(a1 > a0)) return false;
+        *t0 = float(a0);
+        *t1 = float(a1);
+        return true;
+    }
     Power3 power() const override {
         return Intensity3(intensity_.rgb_value()) *
                SolidAngle(2 * kPi * ((1 - cos_start_) + (cos_start_ - cos_end_) / 2));
@@ -78,6 +132,7 @@ private:
     Frame frame_;
     Emission intensity_;
     float cos_start_ = 1, cos_end_ = 0;
+    float cos_clip_ = 0; // the cone, slightly widened, that illuminated_interval() clips to
 };
 
 } // namespace illum

@@ -68,7 +68,13 @@ public:
         const Equiangular* towards(const Light& l) {
             if (&l != light) {
                 light = &l;
-                eq = Equiangular::make(o, d, 0, t_end, *l.position());
+                // Only where the light reaches (a spot light's cone): outside it the light adds nothing, so
+                // no density is given there, and a segment that misses the cone takes no sample.
+                float a = 0, b = t_end;
+                if (l.illuminated_interval(o, d, &a, &b))
+                    eq = Equiangular::make(o, d, a, b, *l.position());
+                else
+                    eq.reset();
             }
             return eq ? &*eq : nullptr;
         }
