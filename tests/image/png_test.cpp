@@ -38,11 +38,11 @@ TEST(Png, ExposureAndToneMapApply) {
     ScratchDir dir;
     const std::string path = dir.file("t.png");
     const Image img(2, 2, Color3(0.25f, 2.0f, 0.0f));
-    write_image(img, path, {.exposure_stops = 2.0f}); // 0.25 * 4 = 1 -> white; 8 -> clamped
+    write_image(img, path, {.exposure_stops = 2.0f, .exr = {}}); // 0.25 * 4 = 1 -> white; 8 -> clamped
     Image back = read_image(path);
     EXPECT_EQ(back(1, 1), Color3(1.0f, 1.0f, 0.0f));
 
-    write_image(img, path, {.exposure_stops = 0.0f, .tonemap = ToneMap::Reinhard});
+    write_image(img, path, {.exposure_stops = 0.0f, .tonemap = ToneMap::Reinhard, .exr = {}});
     back = read_image(path);
     // 0.25 -> 0.2, 2 -> 2/3, each quantised to 8-bit sRGB.
     EXPECT_EQ(back(0, 0).r, srgb8_decode(srgb8_encode(0.2f)));

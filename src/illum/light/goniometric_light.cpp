@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "illum/envmap/layout.h"
+#include "illum/light/point_source.h"
 
 namespace illum {
 
@@ -43,13 +44,7 @@ Intensity3 GoniometricLight::intensity(Vector3f w_world, const SampledWavelength
 
 std::optional<LightLiSample> GoniometricLight::sample_li(const LightSampleContext& ctx, Point2f,
                                                          const SampledWavelengths& lambda) const {
-    Vector3f d = position_ - ctx.p;
-    float d2 = length_squared(d);
-    if (d2 == 0) return std::nullopt;
-    Vector3f wi = d / std::sqrt(d2);
-    Intensity3 i = intensity(-wi, lambda);
-    if (i.is_black()) return std::nullopt;
-    return LightLiSample{wi, {}, biradiance(i, d2), SolidAnglePdf(1), position_, {}, {}, false};
+    return point_source_li(position_, ctx.p, [&](Vector3f w) { return intensity(w, lambda); });
 }
 
 Power3 GoniometricLight::power() const {

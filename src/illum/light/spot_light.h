@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "illum/light/light.h"
+#include "illum/light/point_source.h"
 #include "illum/math/frame.h"
 #include "illum/math/warp.h"
 #include "illum/radiometry/emission.h"
@@ -43,13 +44,7 @@ public:
 
     std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f,
                                            const SampledWavelengths& lambda) const override {
-        Vector3f d = position_ - ctx.p;
-        float d2 = length_squared(d);
-        if (d2 == 0) return std::nullopt;
-        Vector3f wi = d / std::sqrt(d2);
-        Intensity3 i = intensity(-wi, lambda);
-        if (i.is_black()) return std::nullopt;
-        return LightLiSample{wi, {}, biradiance(i, d2), SolidAnglePdf(1), position_, {}, {}, false};
+        return point_source_li(position_, ctx.p, [&](Vector3f w) { return intensity(w, lambda); });
     }
     SolidAnglePdf pdf_li(const LightSampleContext&, Vector3f, const SurfaceHit*) const override {
         return SolidAnglePdf(0);

@@ -136,30 +136,8 @@ SampledSpectrum connect(const PathContext& ctx, PathVertex* lv, PathVertex* cv, 
         if (!pt.is_connectible()) return SampledSpectrum(0.0f);
         float u_light = sampler.get_1d();
         Point2f u = sampler.get_2d();
-        float pmf = 0;
-        const Light* light = scene.light_sampler.sample(u_light, &pmf);
-        if (!light || !(pmf > 0)) return SampledSpectrum(0.0f);
-        LightSampleContext lc =
-            pt.type == VertexType::Surface ? LightSampleContext(pt.hit) : LightSampleContext(pt.p, {}, {});
-        std::optional<LightLiSample> ls = light->sample_li(lc, u, ctx.tc.lambda);
-        if (!ls || ls->biradiance.s.is_black() || !(ls->pdf.value > 0)) return SampledSpectrum(0.0f);
-        sampled.type = VertexType::Light;
-        sampled.light = light;
-        sampled.medium = light->medium;
-        if (ls->at_infinity) {
-            sampled.p = pt.p + ls->wi * std::max(2 * ctx.scene_radius, 1.0f);
-        } else {
-            sampled.p = ls->p_light;
-            sampled.p_error = ls->p_light_error;
-            sampled.ng = sampled.ns = ls->n_light;
-        }
-        // The biradiance is L / p_ω (or I / r² for a point): the light's end of the path over its density.
-        sampled.beta = ls->biradiance.s / pmf;
-        sampled.pdf_fwd = pdf_light_origin(ctx, sampled, pt);
+        if (!connect_sampled_light(ctx, pt, u_light, u, ch, &sampled, &l)) return SampledSpectrum(0.0f);
         have_sampled = true;
-        l = pt.beta * vertex_f(pt, sampled, TransportMode::Radiance) * sampled.beta;
-        if (pt.on_surface()) l *= std::abs(dot(ls->wi, Vector3f(pt.ns)));
-        if (!l.is_black()) l *= connection_transmittance(ctx, pt, sampled, ch);
     } else {
         const PathVertex& qs = lv[s - 1];
         const PathVertex& pt = cv[t - 1];

@@ -343,4 +343,32 @@ SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const Pat
     return connection_transmittance(ctx, a, b, ch) * g;
 }
 
+bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u_light, Point2f u,
+                           int channel, PathVertex* sampled, SampledSpectrum* l) {
+    float pmf = 0;
+    const Light* light = ctx.scene.light_sampler.sample(u_light, &pmf);
+    if (!light || !(pmf > 0)) return false;
+    LightSampleContext lc =
+        pt.type == VertexType::Surface ? LightSampleContext(pt.hit) : LightSampleContext(pt.p, {}, {});
+    std::optional<LightLiSample> ls = light->sample_li(lc, u, ctx.tc.lambda);
+    if (!ls || ls->biradiance.s.is_black() || !(ls->pdf.value > 0)) return false;
+    sampled->type = VertexType::Light;
+    sampled->light = light;
+    sampled->medium = light->medium;
+    if (ls->at_infinity) {
+        sampled->p = pt.p + ls->wi * std::max(2 * ctx.scene_radius, 1.0f);
+    } else {
+        sampled->p = ls->p_light;
+        sampled->p_error = ls->p_light_error;
+        sampled->ng = sampled->ns = ls->n_light;
+    }
+    // The biradiance is L / p_ω (or I / r² for a point): the light's end of the path over its density.
+    sampled->beta = ls->biradiance.s / pmf;
+    sampled->pdf_fwd = pdf_light_origin(ctx, *sampled, pt);
+    *l = pt.beta * vertex_f(pt, *sampled, TransportMode::Radiance) * sampled->beta;
+    if (pt.on_surface()) *l *= std::abs(dot(ls->wi, Vector3f(pt.ns)));
+    if (!l->is_black()) *l *= connection_transmittance(ctx, pt, *sampled, channel);
+    return true;
+}
+
 } // namespace illum

@@ -116,6 +116,12 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
 // in `channel`, with its one-sample spectral MIS): zero when blocked. to_infinity: b is a direction only.
 SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVertex& a, const PathVertex& b,
                                          int channel);
+// Strategy s = 1 of a connection at camera vertex pt (next-event estimation): a light chosen by the scene's
+// light sampler with u_light and a point on it sampled towards pt with u. Fills *sampled (the light vertex,
+// whose pdf_fwd is its origin density, for the MIS weights) and *l = β_pt f |cos| T L / p; false when no
+// light point was sampled.
+bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u_light, Point2f u,
+                           int channel, PathVertex* sampled, SampledSpectrum* l);
 // The geometry term with transmittance: |cos_a| |cos_b| T / d² (cosines with the shading normals, only at
 // surface vertices).
 SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, int channel);
