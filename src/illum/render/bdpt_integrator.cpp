@@ -266,40 +266,9 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
                                 ch_camera, cv + 1);
 
         // The light subpath.
-        int n_light = 0;
-        {
-            float pmf = 0;
-            float u_light = sampler.get_1d();
-            Point2f u_pos = sampler.get_2d(), u_dir = sampler.get_2d();
-            const Light* light = scene_.light_sampler.sample(u_light, &pmf);
-            std::optional<LightLeSample> les;
-            if (light && pmf > 0) les = light->sample_le(u_pos, u_dir, tc.lambda);
-            if (les && les->pdf_pos.value > 0 && les->pdf_dir.value > 0 && !les->flux.is_black()) {
-                PathVertex& l0 = lv[0];
-                l0 = PathVertex{};
-                l0.type = VertexType::Light;
-                l0.light = light;
-                l0.p = les->ray.o;
-                l0.ng = l0.ns = les->n;
-                l0.medium = light->medium;
-                l0.beta = les->radiance.s;
-                l0.pdf_fwd = pmf * les->pdf_pos.value;
-                Ray lr = les->ray;
-                lr.medium = light->medium_towards(lr.d, les->n);
-                lr.time = ctx.time;
-                n_light = 1 + walk(ctx, lr, (les->flux / pmf).s, les->pdf_dir.value, max_depth,
-                                   TransportMode::Importance, ch_light, lv + 1);
-                if (l0.is_infinite_light()) {
-                    // The photon's origin is on the scene's disk: the first vertex's forward density is the
-                    // disk's (with the cosine there), the light's is that of the direction.
-                    if (n_light > 1) {
-                        lv[1].pdf_fwd = les->pdf_pos.value;
-                        if (lv[1].on_surface()) lv[1].pdf_fwd *= std::abs(dot(lr.d, Vector3f(lv[1].ng)));
-                    }
-                    l0.pdf_fwd = infinite_light_density(ctx, lr.d);
-                }
-            }
-        }
+        float u_light = sampler.get_1d();
+        Point2f u_pos = sampler.get_2d(), u_dir = sampler.get_2d();
+        int n_light = trace_light_subpath(ctx, u_light, u_pos, u_dir, max_depth, ch_light, lv);
 
         SampledSpectrum l(0.0f);
         // s = 1 samples a light of its own, so it runs even when the light subpath is empty (a photon that

@@ -371,4 +371,35 @@ bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u
     return true;
 }
 
+int trace_light_subpath(const PathContext& ctx, float u_light, Point2f u_pos, Point2f u_dir, int max_depth,
+                        int channel, PathVertex* path) {
+    float pmf = 0;
+    const Light* light = ctx.scene.light_sampler.sample(u_light, &pmf);
+    std::optional<LightLeSample> les;
+    if (light && pmf > 0) les = light->sample_le(u_pos, u_dir, ctx.tc.lambda);
+    if (!les || !(les->pdf_pos.value > 0) || !(les->pdf_dir.value > 0) || les->flux.is_black()) return 0;
+    PathVertex& l0 = path[0];
+    l0 = PathVertex{};
+    l0.type = VertexType::Light;
+    l0.light = light;
+    l0.p = les->ray.o;
+    l0.ng = l0.ns = les->n;
+    l0.medium = light->medium;
+    l0.beta = les->radiance.s;
+    l0.pdf_fwd = pmf * les->pdf_pos.value;
+    Ray lr = les->ray;
+    lr.medium = light->medium_towards(lr.d, les->n);
+    lr.time = ctx.time;
+    int n = 1 + walk(ctx, lr, (les->flux / pmf).s, les->pdf_dir.value, max_depth, TransportMode::Importance,
+                     channel, path + 1);
+    if (l0.is_infinite_light()) {
+        if (n > 1) {
+            path[1].pdf_fwd = les->pdf_pos.value;
+            if (path[1].on_surface()) path[1].pdf_fwd *= std::abs(dot(lr.d, Vector3f(path[1].ng)));
+        }
+        l0.pdf_fwd = infinite_light_density(ctx, lr.d);
+    }
+    return n;
+}
+
 } // namespace illum

@@ -116,6 +116,12 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
 // in `channel`, with its one-sample spectral MIS): zero when blocked. to_infinity: b is a direction only.
 SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVertex& a, const PathVertex& b,
                                          int channel);
+// A light subpath (PBR 4th ed. §16.3.3, GenerateLightSubpath): a light chosen with u_light, a photon from
+// sample_le(u_pos, u_dir) as vertex 0, then the random walk in importance mode at the context's time. For a
+// light at infinity the origin lies on the scene's disk: vertex 1's forward density is the disk's (with the
+// cosine there) and the light's is that of the direction. Returns the number of vertices (0: no photon).
+int trace_light_subpath(const PathContext& ctx, float u_light, Point2f u_pos, Point2f u_dir, int max_depth,
+                        int channel, PathVertex* path);
 // Strategy s = 1 of a connection at camera vertex pt (next-event estimation): a light chosen by the scene's
 // light sampler with u_light and a point on it sampled towards pt with u. Fills *sampled (the light vertex,
 // whose pdf_fwd is its origin density, for the MIS weights) and *l = β_pt f |cos| T L / p; false when no

@@ -180,34 +180,10 @@ void VcmRender::trace_light(std::size_t p, int sample_index, ThreadContext& tc, 
     }
     PathContext ctx{scene_, tc, rng, scene_radius_};
     PathVertex* lv = sc.light.data();
-    float pmf = 0;
     float u_light = sampler.get_1d();
     Point2f u_pos = sampler.get_2d(), u_dir = sampler.get_2d();
-    const Light* light = scene_.light_sampler.sample(u_light, &pmf);
-    std::optional<LightLeSample> les;
-    if (light && pmf > 0) les = light->sample_le(u_pos, u_dir, tc.lambda);
-    if (!les || !(les->pdf_pos.value > 0) || !(les->pdf_dir.value > 0) || les->flux.is_black()) return;
-    PathVertex& l0 = lv[0];
-    l0 = PathVertex{};
-    l0.type = VertexType::Light;
-    l0.light = light;
-    l0.p = les->ray.o;
-    l0.ng = l0.ns = les->n;
-    l0.medium = light->medium;
-    l0.beta = les->radiance.s;
-    l0.pdf_fwd = pmf * les->pdf_pos.value;
-    Ray lr = les->ray;
-    lr.medium = light->medium_towards(lr.d, les->n);
-    int n = 1 + walk(ctx, lr, (les->flux / pmf).s, les->pdf_dir.value, max_depth_, TransportMode::Importance,
-                     ch, lv + 1);
-    if (l0.is_infinite_light()) {
-        // As BDPT: the photon's origin is on the scene's disk; the light's density is the direction's.
-        if (n > 1) {
-            lv[1].pdf_fwd = les->pdf_pos.value;
-            if (lv[1].on_surface()) lv[1].pdf_fwd *= std::abs(dot(lr.d, Vector3f(lv[1].ng)));
-        }
-        l0.pdf_fwd = infinite_light_density(ctx, lr.d);
-    }
+    int n = trace_light_subpath(ctx, u_light, u_pos, u_dir, max_depth_, ch, lv);
+    if (n == 0) return;
     const bool terminated = tc.lambda.secondary_terminated();
     for (int i = 0; i < n; ++i) sc.lmis[std::size_t(i)] = mis_of(lv[i]);
     const bool light0_delta = lv[0].is_delta_light();
