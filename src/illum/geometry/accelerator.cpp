@@ -91,10 +91,30 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
     int n = shape->crossings(ray, r->tnear, r->tfar, c);
     for (int i = 0; i < n; ++i) {
         float t = float(c[i].t);
-        if (t > r->tnear && t < r->tfar && shape_keeps(*shape, c[i], *r, args->geomID)) {
-            r->tfar = -std::numeric_limits<float>::infinity();
-            return;
+        if (!(t > r->tnear && t < r->tfar) || !shape_keeps(*shape, c[i], *r, args->geomID)) continue;
+        if (args->context->filter) {
+            // A context filter (Accelerator::shadow_crossings) sees the crossing as Embree shows it a
+            // triangle's, with the ray's tfar at the hit, and may let the ray pass.
+            RTCHit h{};
+            h.Ng_z = 1;
+            h.primID = args->primID;
+            h.geomID = args->geomID;
+            h.instID[0] = args->context->instID[0];
+            int valid = -1;
+            float tfar = r->tfar;
+            r->tfar = t;
+            RTCFilterFunctionNArguments fa{&valid,
+                                           args->geometryUserPtr,
+                                           args->context,
+                                           reinterpret_cast<RTCRayN*>(r),
+                                           reinterpret_cast<RTCHitN*>(&h),
+                                           1};
+            rtcFilterOcclusion(args, &fa);
+            r->tfar = tfar;
+            if (!valid) continue;
         }
+        r->tfar = -std::numeric_limits<float>::infinity();
+        return;
     }
 }
 
@@ -138,7 +158,7 @@ Accelerator::Accelerator() {
     rtcSetDeviceErrorFunction(device_, embree_error, nullptr);
     scene_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     inv_shutter_ = 0; // nothing moves yet (add_moving_instance)
 }
 
@@ -166,7 +186,7 @@ std::uint32_t Accelerator::begin_prototype() {
     building_ = prototypes_.back().get();
     building_->scene = rtcNewScene(device_);
     rtcSetSceneBuildQuality(building_->scene, RTC_BUILD_QUALITY_HIGH);
-    rtcSetSceneFlags(building_->scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(building_->scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     return std::uint32_t(prototypes_.size() - 1);
 }
 
@@ -413,17 +433,25 @@ void Accelerator::commit() {
 }
 
 bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
+    Found found;
+    return find(ray, &found) && complete(found, ray, hit);
+}
+
+bool Accelerator::find(const Ray& ray, Found* found) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
-    RTCRayHit rh;
+    RTCRayHit& rh = found->rh;
     rh.ray = to_embree(ray, embree_time(ray.time));
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     if (!traceable(rh.ray)) return false;
     rtcIntersect1(scene_, &ctx, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+}
 
+bool Accelerator::complete(const Found& found, const Ray& ray, SurfaceHit* hit) const {
+    const RTCRayHit& rh = found.rh;
     if (rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID) {
         fill_hit(records_[rh.hit.geomID], rh, ray, hit);
         return true;
@@ -463,6 +491,13 @@ bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
     hit->ns = normalize(w(hit->ns));
     hit->dpdu = w(hit->dpdu);
     hit->world_from_instance = &w;
+    if (inst.moving) {
+        // `moved` ends with this call, so the shading partials (which bump mapping asks for later) are taken
+        // now; a moving instance's hits are rare enough that every one can pay for them.
+        hit->complete_shading_partials();
+        hit->partials_source = nullptr;
+        hit->world_from_instance = nullptr;
+    }
     hit->wo = normalize(-ray.d);
     return true;
 }
@@ -503,6 +538,61 @@ float Accelerator::intersect_distance(const Ray& ray) const {
     if (!traceable(rh.ray)) return kInfinity;
     rtcIntersect1(scene_, &ctx, &rh);
     return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
+}
+
+namespace {
+
+struct ShadowContext {
+    RTCIntersectContext ctx; // first, so Embree's context pointer is this struct's
+    const Accelerator* accelerator;
+    Accelerator::ShadowCrossings* out;
+};
+
+} // namespace
+
+void Accelerator::shadow_filter(const RTCFilterFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    const auto* sc = reinterpret_cast<const ShadowContext*>(args->context);
+    const auto* h = reinterpret_cast<const RTCHit*>(args->hit);
+    const auto* r = reinterpret_cast<const RTCRay*>(args->ray);
+    if (!sc->accelerator->record_of(h->geomID, h->instID[0]).passable) return; // a blocker: accepted
+    ShadowCrossings& o = *sc->out;
+    // With spatial splits a triangle can sit in two leaves and be reported twice: one crossing.
+    for (int i = 0; i < o.n; ++i) {
+        const RTCRayHit& k = o.hits[i].rh;
+        if (k.hit.geomID == h->geomID && k.hit.primID == h->primID && k.hit.instID[0] == h->instID[0] &&
+            k.ray.tfar == r->tfar) {
+            args->valid[0] = 0;
+            return;
+        }
+    }
+    if (o.n == kMaxShadowCrossings) {
+        o.overflow = true; // accepted: the traversal ends, and the caller traces crossing by crossing
+        return;
+    }
+    RTCRayHit& k = o.hits[o.n++].rh;
+    k.ray = *r;
+    k.hit = *h;
+    args->valid[0] = 0; // passes: the traversal goes on
+}
+
+bool Accelerator::shadow_crossings(const Ray& ray, ShadowCrossings* out) const {
+    out->n = 0;
+    out->overflow = false;
+    ShadowContext sc;
+    rtcInitIntersectContext(&sc.ctx);
+    sc.ctx.filter = shadow_filter;
+    sc.accelerator = this;
+    sc.out = out;
+    RTCRay r = to_embree(ray, embree_time(ray.time));
+    if (!traceable(r)) return true;
+    rtcOccluded1(scene_, &sc.ctx, &r);
+    if (out->overflow || (r.tfar < 0 && std::isinf(r.tfar))) return false;
+    // Nearest first (insertion sort: a handful at most).
+    for (int i = 1; i < out->n; ++i)
+        for (int j = i; j > 0 && out->hits[j].t() < out->hits[j - 1].t(); --j)
+            std::swap(out->hits[j], out->hits[j - 1]);
+    return true;
 }
 
 bool Accelerator::occluded(const Ray& ray) const {

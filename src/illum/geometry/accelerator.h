@@ -63,11 +63,42 @@ public:
 
     // Closest hit along the ray within (0, ray.tmax).
     bool intersect(const Ray& ray, SurfaceHit* hit) const;
+    // The same in two steps: the closest hit as Embree finds it, then (complete) its surface data, which a
+    // caller may never need (volpath: a collision in the medium often ends the ray's stretch first).
+    struct Found {
+        RTCRayHit rh;
+        float t() const { return rh.ray.tfar; }
+    };
+    bool find(const Ray& ray, Found* found) const;
+    // The surface data of what find() found for the same ray; false if there is nothing to see after all (an
+    // instance whose motion scales it through zero at this time).
+    bool complete(const Found& found, const Ray& ray, SurfaceHit* hit) const;
     // Closest-hit traversal only, without computing the hit's surface data (for measuring Embree's own
     // ray rate); returns the hit distance or infinity.
     float intersect_distance(const Ray& ray) const;
     // Whether anything blocks the ray within (0, ray.tmax).
     bool occluded(const Ray& ray) const;
+
+    // Shadow rays through media: surfaces marked passable (mark_passable: a boundary between media with no
+    // material) let them through, anything else blocks them. One occlusion traversal gathers the passable
+    // surfaces the ray crosses (at most kMaxShadowCrossings) and stops at the first blocker, where tracing
+    // from crossing to crossing would take one closest-hit traversal each. Returns false if blocked; else
+    // the crossings, nearest first (complete() gives each one's surface). `overflow`: there were more than
+    // fit (the ray is then reported blocked; the caller must trace crossing by crossing instead).
+    static constexpr int kMaxShadowCrossings = 8;
+    struct ShadowCrossings {
+        int n = 0;
+        bool overflow = false;
+        Found hits[kMaxShadowCrossings];
+    };
+    bool shadow_crossings(const Ray& ray, ShadowCrossings* out) const;
+    // Marks every geometry (in prototypes too) whose material passable(material) says shadow rays pass.
+    template <class Passable>
+    void mark_passable(Passable&& passable) {
+        for (Record& r : records_) r.passable = passable(r.material);
+        for (auto& p : prototypes_)
+            for (Record& r : p->records) r.passable = passable(r.material);
+    }
 
     Bounds3f bounds() const { return bounds_; }
     const TriangleMesh* mesh(std::uint32_t geom_id) const;
@@ -95,6 +126,7 @@ private:
         std::uint32_t prototype = 0;         // Kind::Instance
         Transform world_from_instance;       // Kind::Instance
         RTCGeometry moving = nullptr;        // Kind::Instance with motion: Embree interpolates its transform
+        bool passable = false;               // shadow rays pass (mark_passable)
     };
     // Curves gathered for one Embree geometry.
     struct PendingCurves {
@@ -113,6 +145,13 @@ private:
     // Embree's ray time: the ray's time as a fraction of the shutter interval.
     float embree_time(float time) const;
     static void alpha_filter(const RTCFilterFunctionNArguments* args);
+    // The context filter of shadow_crossings(): gathers passable surfaces, accepts blockers.
+    static void shadow_filter(const RTCFilterFunctionNArguments* args);
+    // The record of a hit's geometry (in the instance's prototype for a hit inside an instance).
+    const Record& record_of(std::uint32_t geom_id, std::uint32_t inst_id) const {
+        if (inst_id == RTC_INVALID_GEOMETRY_ID) return records_[geom_id];
+        return prototypes_[records_[inst_id].prototype]->records[geom_id];
+    }
     std::uint32_t attach(RTCGeometry geom, Record record);
     // Makes the Embree geometries of the curves gathered for the world or the prototype being built.
     void flush_curves();

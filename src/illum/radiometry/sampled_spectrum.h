@@ -56,7 +56,9 @@ struct SampledSpectrum {
 
 constexpr SampledSpectrum operator*(float s, SampledSpectrum v) { return v * s; }
 constexpr SampledSpectrum operator/(float s, SampledSpectrum v) { return SampledSpectrum(s) / v; }
+// A grey argument (every lane equal: a grey medium's σ_t d, the common case in fog) takes one exp, not four.
 inline SampledSpectrum exp(SampledSpectrum v) {
+    if (v[0] == v[1] && v[1] == v[2] && v[2] == v[3]) return SampledSpectrum(std::exp(v[0]));
     return {std::exp(v[0]), std::exp(v[1]), std::exp(v[2]), std::exp(v[3])};
 }
 inline SampledSpectrum sqrt(SampledSpectrum v) {

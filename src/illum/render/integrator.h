@@ -47,6 +47,10 @@ protected:
         ++tc.rays;
         return scene_.intersect(ray, hit);
     }
+    bool find(const Ray& ray, Accelerator::Found* found, ThreadContext& tc) const {
+        ++tc.rays;
+        return scene_.find(ray, found);
+    }
     bool occluded(const Ray& ray, ThreadContext& tc) const {
         ++tc.rays;
         return scene_.occluded(ray);

@@ -1,9 +1,13 @@
 #include "illum/render/scene.h"
 
+#include "illum/bsdf/material.h"
+
 namespace illum {
 
 void Scene::finalize() {
     accelerator.commit();
+    // Shadow rays in media pass surfaces without material and interface boundaries (shadow_transmittance).
+    accelerator.mark_passable([](const Material* m) { return !m || m->is_interface(); });
     std::vector<const Light*> all;
     infinite_lights.clear();
     for (std::size_t i = 0; i < lights.size(); ++i) {

@@ -11,8 +11,8 @@
 
 #include "illum/bsdf/material.h"
 #include "illum/camera/camera.h"
-#include "illum/camera/film.h"
 #include "illum/camera/camera_motion.h"
+#include "illum/camera/film.h"
 #include "illum/camera/filter.h"
 #include "illum/camera/sensor.h"
 #include "illum/geometry/accelerator.h"
@@ -132,6 +132,10 @@ public:
     }
 
     bool intersect(const Ray& ray, SurfaceHit* hit) const { return accelerator.intersect(ray, hit); }
+    bool find(const Ray& ray, Accelerator::Found* found) const { return accelerator.find(ray, found); }
+    bool complete(const Accelerator::Found& found, const Ray& ray, SurfaceHit* hit) const {
+        return accelerator.complete(found, ray, hit);
+    }
     bool occluded(const Ray& ray) const { return accelerator.occluded(ray); }
 
     // Registers the lights with the light sampler and lets them see the scene bounds; call once after

@@ -181,11 +181,13 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
     };
 
     for (int crossings = 0; crossings < kMaxCrossings;) {
-        SurfaceHit hit;
-        bool found = intersect(ray, &hit, tc);
+        // The surface's data is computed only once the path reaches it (a collision in the medium may come
+        // first).
+        Accelerator::Found found_hit;
+        bool found = find(ray, &found_hit, tc);
         if (ray.medium) {
             bool scattered = false, terminated = false;
-            float tmax = found ? hit.t : kInfinity;
+            float tmax = found ? found_hit.t() : kInfinity;
             const Medium* medium = ray.medium;
             // Equiangular single scattering towards point and spot lights on a homogeneous stretch.
             Segment seg;
@@ -195,7 +197,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
                 float len = length(ray.d);
                 seg.o = ray.o;
                 seg.d = ray.d / len;
-                seg.t_end = found ? hit.t * len : kInfinity;
+                seg.t_end = found ? found_hit.t() * len : kInfinity;
                 seg.r_u0 = r_u;
                 l += sample_equiangular(seg, *medium, beta, path, tc);
             }
@@ -278,6 +280,8 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
             if (beta.is_black()) break;
         }
 
+        SurfaceHit hit;
+        if (found) found = scene_.complete(found_hit, ray, &hit);
         if (!found) {
             for (const Light* env : scene_.infinite_lights)
                 add_emission(env->le(ray, tc.lambda).s, env, nullptr);
