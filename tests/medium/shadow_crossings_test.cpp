@@ -20,9 +20,10 @@ namespace {
 std::unique_ptr<Scene> slab_stack(int n, bool blocker) {
     std::string text = "Camera \"perspective\"\nWorldBegin\n";
     for (int i = 0; i < n; ++i)
-        text += fmt::format("MakeNamedMedium \"m{}\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [{} {} {}] "
-                            "\"rgb sigma_s\" [0 0 0]\n",
-                            i, 0.5 * (i + 1), 0.5 * (i + 1), 0.5 * (i + 1));
+        text +=
+            fmt::format("MakeNamedMedium \"m{}\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [{} {} {}] "
+                        "\"rgb sigma_s\" [0 0 0]\n",
+                        i, 0.5 * (i + 1), 0.5 * (i + 1), 0.5 * (i + 1));
     text += "Material \"interface\"\n";
     for (int k = 0; k <= n; ++k) {
         // Normal +z: "outside" is above the plane (slab k-1, or none for k = 0), "inside" below (slab k).

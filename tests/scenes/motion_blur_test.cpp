@@ -181,6 +181,80 @@ TEST(MotionBlur, DeterministicAcrossThreadCounts) {
     }
 }
 
+// A small emitter seen by a perspective camera that moves sideways: every integrator must see it smeared
+// over the camera's motion. Light tracing, BDPT and VCM reach the camera by connections (sample_wi, pdf_we),
+// which must see the camera where it is at the path's time, not at its start pose (that gave a sharp
+// square at the start position). Compared with the path tracer on the streak's columns: its total, its
+// centroid and its extent.
+TEST(MotionBlur, EveryIntegratorSeesAMovingCameraAtThePathsTime) {
+    const std::string scene = R"(
+Film "rgb" "integer xresolution" [64] "integer yresolution" [16]
+PixelFilter "box" "float xradius" [0.5] "float yradius" [0.5]
+Sampler "independent"
+ActiveTransform StartTime
+LookAt -1 0 -5  -1 0 0  0 1 0
+ActiveTransform EndTime
+LookAt 1 0 -5  1 0 0  0 1 0
+ActiveTransform All
+Camera "perspective" "float fov" [30]
+WorldBegin
+Material "diffuse" "rgb reflectance" [0 0 0]
+AttributeBegin
+  AreaLightSource "diffuse" "rgb L" [4 4 4]
+  Shape "trianglemesh" "point3 P" [-0.15 -0.15 0  -0.15 0.15 0  0.15 0.15 0  0.15 -0.15 0]
+    "integer indices" [0 1 2 0 2 3]
+AttributeEnd
+)";
+    struct Profile {
+        double total = 0, centroid = 0;
+        int first = -1, last = -1;
+    };
+    auto profile = [](const Image& img) {
+        std::vector<double> col(std::size_t(img.width()), 0.0);
+        double peak = 0;
+        Profile p;
+        for (int x = 0; x < img.width(); ++x) {
+            for (int y = 0; y < img.height(); ++y) col[std::size_t(x)] += img.at(x, y).g;
+            p.total += col[std::size_t(x)];
+            p.centroid += x * col[std::size_t(x)];
+            peak = std::max(peak, col[std::size_t(x)]);
+        }
+        p.centroid /= p.total;
+        for (int x = 0; x < img.width(); ++x)
+            if (col[std::size_t(x)] > 0.2 * peak) {
+                if (p.first < 0) p.first = x;
+                p.last = x;
+            }
+        return p;
+    };
+    const int kSpp = 1024;
+    auto render_with = [&](const std::string& integrator) {
+        test::RenderSetup setup;
+        setup.integrator = integrator;
+        setup.spp = kSpp;
+        setup.sampler = "independent";
+        setup.seed = 5;
+        RenderResult r = test::render_pbrt(scene, setup);
+        EXPECT_EQ(r.nonfinite_samples, 0u) << integrator;
+        return profile(r.image);
+    };
+    Profile path = render_with("path");
+    // The square (1 pixel wide here) moves 2 units across the view: about 12 columns.
+    EXPECT_GE(path.last - path.first, 9);
+    // The path tracer's total is L times a sum of Bernoulli fractions (a sample sees the square or not):
+    // variance L Σ/spp. Two such estimates differ by 4.5 standard errors of their difference at most.
+    const double sigma = std::sqrt(4.0 * path.total / kSpp), tolerance = 4.5 * std::sqrt(2.0) * sigma;
+    for (const char* integrator : {"lightpath", "bdpt", "vcm"}) {
+        Profile p = render_with(integrator);
+        std::printf("%-9s total %.4f (path %.4f) centroid %.2f (%.2f) columns %d-%d (%d-%d)\n", integrator,
+                    p.total, path.total, p.centroid, path.centroid, p.first, p.last, path.first, path.last);
+        EXPECT_NEAR(p.total, path.total, tolerance) << integrator;
+        EXPECT_NEAR(p.centroid, path.centroid, 0.5) << integrator;
+        EXPECT_NEAR(p.first, path.first, 1) << integrator;
+        EXPECT_NEAR(p.last, path.last, 1) << integrator;
+    }
+}
+
 TEST(MotionBlur, UnsupportedCasesWarnAtTheirPosition) {
     // pbrt-v4 rejects moving area lights; here the emitter stays at its start transform, with a warning.
     std::string text = options(kStillCamera) + R"(AttributeBegin

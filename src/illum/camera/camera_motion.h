@@ -20,20 +20,55 @@ public:
 
     // A ray from the camera at its start transform, moved to the camera at `time` (direction normalised).
     Ray at(const Ray& r, float time) const {
-        if (!is_moving() || time <= world_from_camera_.start_time()) return r;
-        Matrix4 m = world_from_camera_.components(time).matrix() * camera_from_world_start_;
-        Ray moved = r;
-        double o[3], d[3];
-        for (int i = 0; i < 3; ++i) {
-            o[i] = m(i, 0) * r.o.x + m(i, 1) * r.o.y + m(i, 2) * r.o.z + m(i, 3);
-            d[i] = m(i, 0) * r.d.x + m(i, 1) * r.d.y + m(i, 2) * r.d.z;
-        }
-        moved.o = {float(o[0]), float(o[1]), float(o[2])};
-        moved.d = normalize(Vector3f{float(d[0]), float(d[1]), float(d[2])});
-        return moved;
+        if (!moves_at(time)) return r;
+        return carried(world_from_camera_.components(time).matrix() * camera_from_world_start_, r);
+    }
+    // The other way, for the camera's importance (light tracing, bdpt, vcm): the camera model knows itself
+    // at its start transform only, so a point or ray seen by the camera at `time` is carried to where it
+    // lies relative to the start pose, and answers are carried back with at() / point_at().
+    Ray to_start(const Ray& r, float time) const {
+        if (!moves_at(time)) return r;
+        return carried(start_from(time), r);
+    }
+    Point3f to_start(Point3f p, float time) const {
+        if (!moves_at(time)) return p;
+        return apply_point(start_from(time), p);
+    }
+    Point3f point_at(Point3f p, float time) const {
+        if (!moves_at(time)) return p;
+        return apply_point(world_from_camera_.components(time).matrix() * camera_from_world_start_, p);
+    }
+    Vector3f direction_at(Vector3f d, float time) const {
+        if (!moves_at(time)) return d;
+        return normalize(
+            apply_direction(world_from_camera_.components(time).matrix() * camera_from_world_start_, d));
     }
 
 private:
+    bool moves_at(float time) const { return is_moving() && time > world_from_camera_.start_time(); }
+    // world_from_camera(start) · camera_from_world(time): the inverse of the motion at `time`.
+    Matrix4 start_from(float time) const {
+        Matrix4 m = world_from_camera_.components(time).matrix() * camera_from_world_start_;
+        auto inv = inverse(m);
+        return inv ? *inv : Matrix4::identity();
+    }
+    static Point3f apply_point(const Matrix4& m, Point3f p) {
+        double o[3];
+        for (int i = 0; i < 3; ++i) o[i] = m(i, 0) * p.x + m(i, 1) * p.y + m(i, 2) * p.z + m(i, 3);
+        return {float(o[0]), float(o[1]), float(o[2])};
+    }
+    static Vector3f apply_direction(const Matrix4& m, Vector3f v) {
+        double d[3];
+        for (int i = 0; i < 3; ++i) d[i] = m(i, 0) * v.x + m(i, 1) * v.y + m(i, 2) * v.z;
+        return {float(d[0]), float(d[1]), float(d[2])};
+    }
+    static Ray carried(const Matrix4& m, const Ray& r) {
+        Ray moved = r;
+        moved.o = apply_point(m, r.o);
+        moved.d = normalize(apply_direction(m, r.d));
+        return moved;
+    }
+
     AnimatedTransform world_from_camera_;
     Matrix4 camera_from_world_start_ = Matrix4::identity();
 };

@@ -172,17 +172,12 @@ int AliasTable::sample(float u, float* pmf, float* u_remapped) const {
     const int i = std::min(int(un), n - 1);
     const double up = un - i;
     const Bin& b = bins_[size_t(i)];
-    int out;
-    double ur;
-    if (up < b.q) {
-        out = i;
-        ur = up / b.q;
-    } else {
-        out = int(b.alias);
-        ur = (up - b.q) / (1.0 - b.q);
-    }
+    const bool own = up < b.q;
+    const int out = own ? i : int(b.alias);
     if (pmf) *pmf = bins_[size_t(out)].p;
-    if (u_remapped) *u_remapped = std::min(float(ur), kOneMinusEpsilon);
+    // (The divisions only when asked: picking a light needs none.)
+    if (u_remapped)
+        *u_remapped = std::min(float(own ? up / b.q : (up - b.q) / (1.0 - b.q)), kOneMinusEpsilon);
     return out;
 }
 

@@ -25,6 +25,8 @@ UpliftedRgb uplift_albedo_poly(Color3 rgb, const RGBColorSpace& cs);    // rgb c
 UpliftedRgb uplift_unbounded_poly(Color3 rgb, const RGBColorSpace& cs); // rgb clamped to >= 0
 
 inline SampledSpectrum sample(const UpliftedRgb& u, const SampledWavelengths& w) {
+    // A grey's polynomial is the constant c2 (RGBToSpectrumTable::lookup): one sigmoid, the same value.
+    if (u.poly.c0 == 0 && u.poly.c1 == 0) return SampledSpectrum(u.scale * u.poly(w.lambda[0]));
     SampledSpectrum s;
     for (int i = 0; i < kSpectrumSamples; ++i) s[i] = u.scale * u.poly(w.lambda[i]);
     return s;

@@ -120,7 +120,7 @@ SampledSpectrum connect(const PathContext& ctx, PathVertex* lv, PathVertex* cv, 
         const PathVertex& qs = lv[s - 1];
         if (camera_delta || !qs.is_connectible()) return SampledSpectrum(0.0f);
         Point2f u = sampler.get_2d();
-        std::optional<CameraWiSample> cs = scene.camera->sample_wi(qs.p, u);
+        std::optional<CameraWiSample> cs = scene.camera_sample_wi(qs.p, u, ctx.time);
         if (!cs) return SampledSpectrum(0.0f);
         *p_raster = cs->p_raster;
         sampled.type = VertexType::Camera;
@@ -261,7 +261,7 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         cv[0].delta = camera_delta;
         Ray ray = cr->ray;
         ray.medium = scene_.camera_medium;
-        float pdf_dir = camera.pdf_we(ray).dir.value;
+        float pdf_dir = scene_.camera_pdf_we(ray).dir.value;
         int n_camera = 1 + walk(ctx, ray, cv[0].beta, pdf_dir, max_depth + 1, TransportMode::Radiance,
                                 ch_camera, cv + 1);
 

@@ -47,7 +47,6 @@ LightPathIntegrator::LightPathIntegrator(const Scene& scene, int max_depth, bool
 
 int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::vector<Splat>& out) const {
     Sampler& sampler = tc.sampler;
-    const Camera& camera = *scene_.camera;
     int dropped = 0;
     auto splat = [&](Point2f p_raster, const Radiance3& l) {
         if (!l.is_finite() || l.has_negative()) {
@@ -103,7 +102,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
     // no area to be seen.
     Point2f u_cam = sampler.get_2d();
     if (light->type() == LightType::Area) {
-        if (auto cs = camera.sample_wi(les->p_surface, u_cam)) {
+        if (auto cs = scene_.camera_sample_wi(les->p_surface, u_cam, time)) {
             SurfaceHit y;
             y.p = les->p_surface;
             y.n = les->n;
@@ -162,7 +161,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
                         r_u *= t_m * mp.sigma_s / pdf;
                         Vector3f travel = ray.d / length(ray.d);
                         Point2f u_lens = sampler.get_2d();
-                        if (auto cs = camera.sample_wi(p, u_lens))
+                        if (auto cs = scene_.camera_sample_wi(p, u_lens, time))
                             connect(nullptr, p, medium, *cs, beta * mp.phase.p(dot(travel, cs->wi)));
                         ++depth;
                         float phase_pdf = 0;
@@ -206,7 +205,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
         // Connect to the camera (t = 1): L = β f*(ωo → ωc) |cos θc| W_e / p_ω (PBR 4th ed. §16.3.2).
         Point2f u_lens = sampler.get_2d();
         if (bsdf.is_non_specular() && !(caustics_only_ && first_vertex)) {
-            if (auto cs = camera.sample_wi(hit.p, u_lens)) {
+            if (auto cs = scene_.camera_sample_wi(hit.p, u_lens, time)) {
                 Bsdf3 f = bsdf.f(wo, cs->wi, TransportMode::Importance);
                 float cos_c =
                     std::abs(dot(cs->wi, Vector3f(hit.ns))) * shading_normal_adjoint(hit, wo, cs->wi);

@@ -113,7 +113,7 @@ float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* 
     float pdf = 0;
     switch (v.type) {
     case VertexType::Camera:
-        pdf = ctx.scene.camera->pdf_we(Ray{v.p, wn}).dir.value;
+        pdf = ctx.scene.camera_pdf_we(Ray{v.p, wn, kInfinity, ctx.time}).dir.value;
         break;
     case VertexType::Surface:
         pdf = v.bsdf.pdf(wp, wn).value;

@@ -120,6 +120,15 @@ public:
 private:
     void light_pass(int sample_index, tbb::task_arena& arena);
     void trace_light(std::size_t p, int sample_index, ThreadContext& tc, Scratch& sc, LightChunk& out);
+    // Motion blur: the time of light subpath p and of the camera subpaths paired with it (their connections
+    // join the two at one instant), uniform in the shutter interval from a hash of p and the iteration. A
+    // merge joins a camera subpath with other light subpaths' vertices, found at their own times (as SPPM's
+    // photons are, and pbrt-v4's).
+    float path_time(std::size_t p, int sample_index) const {
+        if (!scene_.has_motion) return 0;
+        std::uint64_t h = hash(std::uint64_t(p), std::uint32_t(sample_index), std::uint32_t(0x7713u));
+        return scene_.sample_time(float(h >> 40) * 0x1p-24f);
+    }
     void build_grid();
     void camera_pass(int sample_index, tbb::task_arena& arena);
     void trace_camera(int x, int y, int sample_index, ThreadContext& tc, Scratch& sc, std::uint64_t* merges,
@@ -178,7 +187,7 @@ void VcmRender::trace_light(std::size_t p, int sample_index, ThreadContext& tc, 
         float a = sampler.get_1d(), b = sampler.get_1d();
         rng.set_sequence(hash(std::uint32_t(a * 0x1p32f), std::uint32_t(b * 0x1p32f)));
     }
-    PathContext ctx{scene_, tc, rng, scene_radius_};
+    PathContext ctx{scene_, tc, rng, scene_radius_, path_time(p, sample_index)};
     PathVertex* lv = sc.light.data();
     float u_light = sampler.get_1d();
     Point2f u_pos = sampler.get_2d(), u_dir = sampler.get_2d();
@@ -198,7 +207,7 @@ void VcmRender::trace_light(std::size_t p, int sample_index, ThreadContext& tc, 
         const PathVertex& qs = lv[s - 1];
         Point2f u = sampler.get_2d();
         if (!qs.is_connectible()) continue;
-        std::optional<CameraWiSample> cs = scene_.camera->sample_wi(qs.p, u);
+        std::optional<CameraWiSample> cs = scene_.camera_sample_wi(qs.p, u, ctx.time);
         if (!cs) continue;
         PathVertex cam;
         cam.type = VertexType::Camera;
@@ -401,6 +410,9 @@ void VcmRender::trace_camera(int x, int y, int sample_index, ThreadContext& tc, 
     tc.lambda = lambda_;
     if (spectral && camera.is_dispersive()) tc.lambda.terminate_secondary();
     std::optional<CameraRay> cr = camera.generate_ray(p_film, u_lens, spectral ? tc.lambda.hero() : kDLineNm);
+    // The paired light subpath, p mod N (below).
+    const std::size_t q = (std::size_t(y) * std::size_t(w_) + std::size_t(x)) % n_light_;
+    if (cr && scene_.has_motion) cr->ray = scene_.camera_ray_at(cr->ray, path_time(q, sample_index));
     const int ch = std::min(kSpectrumSamples - 1, int(sampler.get_1d() * kSpectrumSamples));
     PCG32 rng;
     {
@@ -411,7 +423,7 @@ void VcmRender::trace_camera(int x, int y, int sample_index, ThreadContext& tc, 
         film_.add_sample(x, y, Color3(0.0f), fs.weight);
         return;
     }
-    PathContext ctx{scene_, tc, rng, scene_radius_};
+    PathContext ctx{scene_, tc, rng, scene_radius_, cr->ray.time};
     PathVertex* cv = sc.camera.data();
     cv[0] = PathVertex{};
     cv[0].type = VertexType::Camera;
@@ -421,14 +433,13 @@ void VcmRender::trace_camera(int x, int y, int sample_index, ThreadContext& tc, 
     cv[0].delta = camera_delta_;
     Ray ray = cr->ray;
     ray.medium = scene_.camera_medium;
-    const float pdf_dir = camera.pdf_we(ray).dir.value;
+    const float pdf_dir = scene_.camera_pdf_we(ray).dir.value;
     const int n_camera =
         1 + walk(ctx, ray, cv[0].beta, pdf_dir, max_depth_ + 1, TransportMode::Radiance, ch, cv + 1);
     for (int i = 0; i < n_camera; ++i) sc.cmis[std::size_t(i)] = mis_of(cv[i]);
     subpath_tails(sc.cmis.data(), n_camera, true, false, techniques_, sc.ctail.data());
 
-    // The paired light subpath, p mod N, its BSDFs rebuilt from the stored hits.
-    const std::size_t q = (std::size_t(y) * std::size_t(w_) + std::size_t(x)) % n_light_;
+    // The paired light subpath, its BSDFs rebuilt from the stored hits.
     const LightChunk& chunk = light_chunks_[q / kChunk];
     const std::size_t qi = q % kChunk;
     const std::uint32_t b0 = chunk.path_begin[qi], b1 = chunk.path_begin[qi + 1];

@@ -147,7 +147,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
     // (Asked only when a path finds an area light, which most do not.)
     int on_film = -1;
     auto split = [&] {
-        if (on_film < 0) on_film = scene_.camera->pdf_we(camera_ray).dir.value > 0 ? 1 : 0;
+        if (on_film < 0) on_film = scene_.camera_pdf_we(camera_ray).dir.value > 0 ? 1 : 0;
         return on_film == 1;
     };
     SampledSpectrum& beta = path.beta;

@@ -206,11 +206,6 @@ private:
         scene_->camera_motion = CameraMotion(AnimatedTransform(
             c.camera_from_world.inverse(), c.motion.start_time, c.motion.end.inverse(), c.motion.end_time));
         scene_->has_motion = true;
-        if (scene_->request.integrator == "lightpath" || scene_->request.integrator == "bdpt")
-            diag_.unsupported(c.loc,
-                              fmt::format("integrator \"{}\": the paths it joins to a moving camera see "
-                                          "the camera at its start transform",
-                                          scene_->request.integrator));
     }
 
     // A moving shape (pbrt-v4's animated shape): built in object space as a prototype of its own and
