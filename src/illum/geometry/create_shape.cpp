@@ -72,19 +72,16 @@ std::unique_ptr<TriangleMesh> triangle_mesh(const ShapeDesc& s) {
     return mesh;
 }
 
-// Each bilinear patch (p00, p10, p01, p11) becomes the two triangles (p00, p10, p11) and (p00, p11, p01),
-// whose normals agree with the patch's dp/du x dp/dv: exact for planar patches, a two-triangle
-// approximation of curved ones.
-std::unique_ptr<TriangleMesh> bilinear_mesh(const ShapeDesc& s) {
-    auto mesh = std::make_unique<TriangleMesh>();
-    std::vector<int> idx = positions_and_indices(s, *mesh, 4);
-    for (std::size_t q = 0; q < idx.size(); q += 4) {
-        std::uint32_t a = idx[q], b = idx[q + 1], c = idx[q + 2], d = idx[q + 3];
-        mesh->indices.insert(mesh->indices.end(), {a, b, d, a, d, c});
-    }
-    vertex_data(s, *mesh);
-    if (mesh->uv.empty() && idx.size() == 4 && mesh->p.size() == 4)
-        mesh->uv = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+// pbrt-v4's bilinearmesh: four indices per patch (p00, p10, p01, p11), per-vertex "N" and "uv".
+std::unique_ptr<BilinearPatchMesh> bilinear_mesh(const ShapeDesc& s) {
+    TriangleMesh data;
+    std::vector<int> idx = positions_and_indices(s, data, 4);
+    vertex_data(s, data);
+    auto mesh = std::make_unique<BilinearPatchMesh>();
+    mesh->p = std::move(data.p);
+    mesh->n = std::move(data.n);
+    mesh->uv = std::move(data.uv);
+    mesh->indices.assign(idx.begin(), idx.end());
     return mesh;
 }
 
@@ -165,7 +162,11 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
     if (s.type == "trianglemesh") {
         g.mesh = triangle_mesh(s);
     } else if (s.type == "bilinearmesh") {
-        g.mesh = bilinear_mesh(s);
+        g.patches = bilinear_mesh(s);
+        g.patches->flip_normal = flip_of(s);
+        g.patches->transform(s.world_from_object, s.reverse_orientation);
+        g.patches->finalize();
+        return g;
     } else if (s.type == "plymesh") {
         g.mesh = ply_mesh(s, textures.diagnostics());
         if (!g.mesh) return std::nullopt;
