@@ -5,6 +5,7 @@
 
 #include "illum/geometry/cylinder.h"
 #include "illum/geometry/disk.h"
+#include "illum/geometry/loop_subdivision.h"
 #include "illum/geometry/ply.h"
 #include "illum/geometry/sphere.h"
 
@@ -82,6 +83,25 @@ std::unique_ptr<BilinearPatchMesh> bilinear_mesh(const ShapeDesc& s) {
     mesh->n = std::move(data.n);
     mesh->uv = std::move(data.uv);
     mesh->indices.assign(idx.begin(), idx.end());
+    return mesh;
+}
+
+// pbrt-v4's loopsubdiv: "levels" (default 3) of Loop subdivision of the triangles "indices" over "P", pushed
+// to the limit surface with its normals (loop_subdivision.h); "scheme" is read and ignored, as pbrt-v4 does.
+std::unique_ptr<TriangleMesh> loop_subdivision_mesh(const ShapeDesc& s) {
+    int levels = s.params.get_int("levels", 3);
+    if (levels < 0 || levels > 12)
+        throw Error(param_loc(s, "levels"),
+                    fmt::format("loopsubdiv levels must be in [0, 12], not {}", levels));
+    s.params.get_string("scheme", "loop");
+    if (!s.params.has("indices")) throw Error(s.loc, "loopsubdiv needs \"integer indices\"");
+    TriangleMesh given;
+    std::vector<int> idx = positions_and_indices(s, given, 3);
+    SubdividedMesh sub = loop_subdivide(given.p, idx, levels);
+    auto mesh = std::make_unique<TriangleMesh>();
+    mesh->p = std::move(sub.p);
+    mesh->n = std::move(sub.n);
+    mesh->indices = std::move(sub.indices);
     return mesh;
 }
 
@@ -183,8 +203,9 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
             g.alpha = nullptr;
         }
         return g;
-    } else if (s.type == "loopsubdiv" || s.type == "cone" || s.type == "paraboloid" ||
-               s.type == "hyperboloid") {
+    } else if (s.type == "loopsubdiv") {
+        g.mesh = loop_subdivision_mesh(s);
+    } else if (s.type == "cone" || s.type == "paraboloid" || s.type == "hyperboloid") {
         textures.diagnostics().unsupported(
             s.loc, fmt::format("shape \"{}\" is not supported yet and is skipped", s.type));
         return std::nullopt;
