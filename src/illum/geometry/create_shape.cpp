@@ -5,6 +5,7 @@
 
 #include "illum/geometry/cylinder.h"
 #include "illum/geometry/disk.h"
+#include "illum/geometry/displace_mesh.h"
 #include "illum/geometry/loop_subdivision.h"
 #include "illum/geometry/ply.h"
 #include "illum/geometry/sphere.h"
@@ -105,7 +106,28 @@ std::unique_ptr<TriangleMesh> loop_subdivision_mesh(const ShapeDesc& s) {
     return mesh;
 }
 
-std::unique_ptr<TriangleMesh> ply_mesh(const ShapeDesc& s, Diagnostics& diag) {
+// pbrt-v4's plymesh "displacement" (a float texture; a float is taken as a constant one): the mesh refined
+// until its edges are shorter than "edgelength" (default 1) times Option "displacementedgescale" in world
+// space, then displaced along its normals (displace_mesh.h).
+void displace_ply_mesh(const ShapeDesc& s, TriangleMesh& mesh, TextureParams& textures, float edge_scale) {
+    float edge = s.params.get_float("edgelength", 1) * edge_scale; // read, as pbrt-v4 does, even unused
+    const FloatTexture* d = textures.scalar(s.params, "displacement", std::nullopt);
+    if (!d) return;
+    SourceLocation loc = param_loc(s, "displacement");
+    if (!(edge > 0) || !std::isfinite(edge))
+        throw Error(
+            param_loc(s, "edgelength"),
+            fmt::format("plymesh edgelength times displacementedgescale must be positive, not {}", edge));
+    if (mesh.uv.empty()) throw Error(loc, "plymesh \"displacement\" needs the mesh's uv (as in pbrt-v4)");
+    try {
+        displace_mesh(mesh, *d, s.world_from_object, edge);
+    } catch (const Error& e) {
+        throw Error(loc, fmt::format("plymesh: {}", e.what()));
+    }
+}
+
+std::unique_ptr<TriangleMesh> ply_mesh(const ShapeDesc& s, TextureParams& textures, float edge_scale) {
+    Diagnostics& diag = textures.diagnostics();
     std::string file = s.params.get_string("filename", "");
     if (file.empty()) throw Error(s.loc, "plymesh needs \"string filename\"");
     TriangleMeshData data;
@@ -119,14 +141,12 @@ std::unique_ptr<TriangleMesh> ply_mesh(const ShapeDesc& s, Diagnostics& diag) {
         diag.unsupported(s.loc, fmt::format("plymesh \"{}\" has no triangles and is skipped", file));
         return nullptr;
     }
-    if (s.params.has("displacement"))
-        diag.unsupported(s.loc, "plymesh \"displacement\" (vertices displaced after subdivision to "
-                                "\"edgelength\") is ignored; a material's \"displacement\" bump-maps");
     auto mesh = std::make_unique<TriangleMesh>();
     mesh->p = std::move(data.positions);
     mesh->n = std::move(data.normals);
     mesh->uv = std::move(data.uvs);
     mesh->indices.assign(data.indices.begin(), data.indices.end());
+    displace_ply_mesh(s, *mesh, textures, edge_scale);
     return mesh;
 }
 
@@ -171,7 +191,8 @@ const FloatTexture* alpha_of(const ShapeDesc& s, TextureParams& textures) {
 
 } // namespace
 
-std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& textures) {
+std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& textures,
+                                          float displacement_edge_scale) {
     if (!s.world_from_object.matrix().is_finite()) throw Error(s.loc, "shape transform is not finite");
     // A constant alpha of 0 removes the shape (pbrt-v4 does the same); any other alpha below 1 is a
     // cut-out.
@@ -188,7 +209,7 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
         g.patches->finalize();
         return g;
     } else if (s.type == "plymesh") {
-        g.mesh = ply_mesh(s, textures.diagnostics());
+        g.mesh = ply_mesh(s, textures, displacement_edge_scale);
         if (!g.mesh) return std::nullopt;
     } else if (s.type == "sphere") {
         g.analytic = sphere(s);

@@ -25,6 +25,8 @@ struct ShapeGeometry {
 
 // nullopt when the shape is removed (constant alpha 0), recognised but skipped (warned), or its file
 // cannot be read (recorded in the diagnostics, so every missing file of a scene is reported together).
-std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& textures);
+// displacement_edge_scale: pbrt-v4's Option "displacementedgescale", which scales plymesh's "edgelength".
+std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& textures,
+                                          float displacement_edge_scale = 1);
 
 } // namespace illum

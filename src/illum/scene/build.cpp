@@ -253,7 +253,7 @@ private:
     // exact area.
     void add_shape(const ShapeDesc& s) {
         if (s.motion.animated && add_moving_shape(s)) return;
-        std::optional<ShapeGeometry> g = create_shape(s, textures_);
+        std::optional<ShapeGeometry> g = create_shape(s, textures_, scene_->request.displacement_edge_scale);
         if (!g) return;
         std::optional<AreaEmission> e;
         if (s.area_light >= 0) e = create_area_emission(desc_.area_lights.at(s.area_light), diag_);
