@@ -93,7 +93,6 @@ TEST(BilinearPatch, TextureCoordinatesNormalsAndOrientation) {
     m->uv = {{0.5f, 0.5f}, {1, 0.5f}, {0.5f, 2}, {1, 2}};
     // Shading normals leaning over -z: the geometric normal turns to their side.
     m->n = {{0, 0, -1}, {1, 0, -1}, {0, 1, -1}, {1, 1, -1}};
-    BilinearPatchMesh& mesh = *m;
     Accelerator acc;
     acc.add_patches(std::move(m), nullptr, {});
     acc.commit();
@@ -109,7 +108,6 @@ TEST(BilinearPatch, TextureCoordinatesNormalsAndOrientation) {
     // ∂p/∂s = ∂p/∂u / (∂s/∂u) = (1, 0, v) / 0.5.
     EXPECT_NEAR(hit.dpdu.x, 2, 1e-4f);
     EXPECT_NEAR(hit.dpdu.z, 2 * v, 1e-4f);
-    (void)mesh;
 
     // Without normals, flip_normal reverses the geometric normal.
     auto f = saddle_mesh();

@@ -61,7 +61,7 @@ struct BilinearPatchMesh final : ShadingPartialsSource {
     // Decides which patches are rectangles; call once the data is in world space.
     void finalize();
 
-    // The texture coordinates at (u, v), and ∂(s, t)/∂(u, v)'s inverse terms pbrt-v4 uses for ∂p/∂s, ∂p/∂t.
+    // The texture coordinates (s, t) at (u, v): the bilinear interpolation of the vertices' uv, else (u, v).
     Point2f texture_uv(std::size_t patch, float u, float v) const;
     // The unit geometric normal at (u, v), oriented as the mesh says.
     Normal3f geometric_normal(std::size_t patch, float u, float v) const;
