@@ -126,28 +126,43 @@ void displace_ply_mesh(const ShapeDesc& s, TriangleMesh& mesh, TextureParams& te
     }
 }
 
-std::unique_ptr<TriangleMesh> ply_mesh(const ShapeDesc& s, TextureParams& textures, float edge_scale) {
+// pbrt-v4's plymesh: triangles become a triangle mesh and, without displacement, quads bilinear patches
+// (pbrt-v4 makes a BilinearPatchMesh of them); with displacement quads are split into two triangles first.
+// Fills g.mesh and/or g.patches; false when the file is missing or holds no faces.
+bool ply_mesh(const ShapeDesc& s, TextureParams& textures, float edge_scale, ShapeGeometry& g) {
     Diagnostics& diag = textures.diagnostics();
     std::string file = s.params.get_string("filename", "");
     if (file.empty()) throw Error(s.loc, "plymesh needs \"string filename\"");
+    bool displaced = s.params.has("displacement");
     TriangleMeshData data;
     try {
-        data = read_ply(file);
+        data = read_ply(file, !displaced);
     } catch (const Error& e) {
         diag.missing_file(s.params.find("filename")->loc, e.what());
-        return nullptr;
+        return false;
     }
-    if (data.indices.empty()) {
-        diag.unsupported(s.loc, fmt::format("plymesh \"{}\" has no triangles and is skipped", file));
-        return nullptr;
+    if (data.indices.empty() && data.quads.empty()) {
+        diag.unsupported(s.loc, fmt::format("plymesh \"{}\" has no faces and is skipped", file));
+        return false;
     }
-    auto mesh = std::make_unique<TriangleMesh>();
-    mesh->p = std::move(data.positions);
-    mesh->n = std::move(data.normals);
-    mesh->uv = std::move(data.uvs);
-    mesh->indices.assign(data.indices.begin(), data.indices.end());
-    displace_ply_mesh(s, *mesh, textures, edge_scale);
-    return mesh;
+    if (!data.quads.empty()) {
+        g.patches = std::make_unique<BilinearPatchMesh>();
+        g.patches->p = data.positions;
+        g.patches->n = data.normals;
+        g.patches->uv = data.uvs;
+        g.patches->indices.assign(data.quads.begin(), data.quads.end());
+    }
+    if (data.indices.empty()) {              // quads only, so no displacement
+        s.params.get_float("edgelength", 1); // read, as pbrt-v4 does, even unused
+        return true;
+    }
+    g.mesh = std::make_unique<TriangleMesh>();
+    g.mesh->p = std::move(data.positions);
+    g.mesh->n = std::move(data.normals);
+    g.mesh->uv = std::move(data.uvs);
+    g.mesh->indices.assign(data.indices.begin(), data.indices.end());
+    displace_ply_mesh(s, *g.mesh, textures, edge_scale);
+    return true;
 }
 
 std::unique_ptr<AnalyticShape> sphere(const ShapeDesc& s) {
@@ -204,13 +219,8 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
         g.mesh = triangle_mesh(s);
     } else if (s.type == "bilinearmesh") {
         g.patches = bilinear_mesh(s);
-        g.patches->flip_normal = flip_of(s);
-        g.patches->transform(s.world_from_object, s.reverse_orientation);
-        g.patches->finalize();
-        return g;
     } else if (s.type == "plymesh") {
-        g.mesh = ply_mesh(s, textures, displacement_edge_scale);
-        if (!g.mesh) return std::nullopt;
+        if (!ply_mesh(s, textures, displacement_edge_scale, g)) return std::nullopt;
     } else if (s.type == "sphere") {
         g.analytic = sphere(s);
     } else if (s.type == "disk") {
@@ -233,6 +243,11 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
     } else {
         throw Error(s.loc, fmt::format("unknown shape type \"{}\"", s.type));
     }
+    if (g.patches) {
+        g.patches->flip_normal = flip_of(s);
+        g.patches->transform(s.world_from_object, s.reverse_orientation);
+        g.patches->finalize();
+    }
     if (g.mesh) {
         g.mesh->flip_normal = flip_of(s);
         g.mesh->transform(s.world_from_object);
@@ -241,7 +256,7 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
         if (s.reverse_orientation)
             for (Normal3f& n : g.mesh->n) n = -n;
         g.mesh->finalize();
-    } else {
+    } else if (g.analytic) {
         g.analytic->set_alpha(g.alpha);
     }
     return g;

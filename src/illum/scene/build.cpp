@@ -279,7 +279,7 @@ private:
                 }
             }
             scene_->accelerator.add_mesh(std::move(g->mesh), material, std::move(tri_lights), g->alpha, mi);
-            return;
+            if (!g->patches) return; // a plymesh may hold both triangles and quads
         }
         if (g->patches) {
             std::vector<const Light*> patch_lights;
