@@ -180,9 +180,9 @@ AttributeEnd
 Shape "cylinder"
 Shape "sphere" "float alpha" 0
 )");
-    EXPECT_EQ(s->accelerator.triangle_count(), 2u)
-        << "the prototype's triangles are stored once; the cylinder "
-           "is analytic";
+    EXPECT_EQ(s->accelerator.triangle_count(), 0u)
+        << "the prototype's bilinear patch is a patch, not triangles; the cylinder is analytic";
+    EXPECT_EQ(s->accelerator.geometry_count(), 3u) << "two instances and the cylinder";
     EXPECT_EQ(s->accelerator.instance_count(), 2u);
     EXPECT_THROW(build("ObjectInstance \"nothing\"\n"), Error);
 }

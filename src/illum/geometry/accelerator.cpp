@@ -118,6 +118,58 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
     }
 }
 
+// User geometry callbacks for bilinear patches: one primitive per patch.
+void patch_bounds(const RTCBoundsFunctionArguments* args) {
+    auto* g = static_cast<const PatchUserData*>(args->geometryUserPtr);
+    Bounds3f b = g->mesh->patch_bounds(args->primID);
+    args->bounds_o->lower_x = b.lo.x;
+    args->bounds_o->lower_y = b.lo.y;
+    args->bounds_o->lower_z = b.lo.z;
+    args->bounds_o->upper_x = b.hi.x;
+    args->bounds_o->upper_y = b.hi.y;
+    args->bounds_o->upper_z = b.hi.z;
+}
+
+// The patch's crossing of the ray within (tnear, tfar) that passes the alpha test.
+std::optional<PatchCrossing> patch_crossing(const PatchUserData& g, std::uint32_t prim, const RTCRay& r,
+                                            std::uint32_t geom_id) {
+    auto c = g.mesh->corners(prim);
+    auto x = intersect_bilinear_patch({r.org_x, r.org_y, r.org_z}, {r.dir_x, r.dir_y, r.dir_z}, r.tfar, c[0],
+                                      c[1], c[2], c[3]);
+    if (!x || !(x->t > r.tnear)) return std::nullopt;
+    if (g.alpha) {
+        SurfaceHit h;
+        h.p = lerp(x->u, lerp(x->v, c[0], c[2]), lerp(x->v, c[1], c[3]));
+        h.n = h.ns = g.mesh->geometric_normal(prim, x->u, x->v);
+        h.uv = g.mesh->texture_uv(prim, x->u, x->v);
+        if (!alpha_keeps(g.alpha->evaluate(h), r, geom_id, prim)) return std::nullopt;
+    }
+    return x;
+}
+
+void patch_intersect(const RTCIntersectFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    auto* g = static_cast<const PatchUserData*>(args->geometryUserPtr);
+    auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
+    auto x = patch_crossing(*g, args->primID, rh->ray, args->geomID);
+    if (!x) return;
+    rh->ray.tfar = x->t;
+    rh->hit.u = x->u;
+    rh->hit.v = x->v;
+    rh->hit.Ng_x = rh->hit.Ng_y = 0;
+    rh->hit.Ng_z = 1;
+    rh->hit.primID = args->primID;
+    rh->hit.geomID = args->geomID;
+    rh->hit.instID[0] = args->context->instID[0];
+}
+
+void patch_occluded(const RTCOccludedFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    auto* g = static_cast<const PatchUserData*>(args->geometryUserPtr);
+    auto* r = reinterpret_cast<RTCRay*>(args->ray);
+    if (patch_crossing(*g, args->primID, *r, args->geomID)) r->tfar = -std::numeric_limits<float>::infinity();
+}
+
 // Embree 3 asserts on a ray whose origin or direction has a NaN component or one beyond ±1.844e18 (its
 // FLT_LARGE), or whose tfar is NaN, and Debian's build keeps the assertion: the process aborts (a shadow
 // ray towards a point light at z = 1e19 did, found by fuzz/pbrt_scene_fuzz.cpp). Such a ray cannot be
@@ -331,6 +383,27 @@ std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Ma
     return attach(geom, std::move(r));
 }
 
+std::uint32_t Accelerator::add_patches(std::unique_ptr<BilinearPatchMesh> patches, const Material* material,
+                                       std::vector<const Light*> lights, const FloatTexture* alpha,
+                                       const MediumInterface* medium_interface) {
+    if (patches->rectangle.size() != patches->patch_count()) patches->finalize();
+    for (Point3f p : patches->p) (building_ ? building_->bounds : bounds_).extend(p);
+    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geom, unsigned(patches->patch_count()));
+    Record r;
+    r.kind = Kind::Patches;
+    r.patch_geometry = std::make_unique<PatchUserData>(PatchUserData{patches.get(), alpha});
+    rtcSetGeometryUserData(geom, r.patch_geometry.get());
+    rtcSetGeometryBoundsFunction(geom, patch_bounds, nullptr);
+    rtcSetGeometryIntersectFunction(geom, patch_intersect);
+    rtcSetGeometryOccludedFunction(geom, patch_occluded);
+    r.patches = std::move(patches);
+    r.material = material;
+    r.medium_interface = medium_interface;
+    r.lights = std::move(lights);
+    return attach(geom, std::move(r));
+}
+
 std::uint32_t Accelerator::add_shape(std::unique_ptr<AnalyticShape> shape, const Material* material,
                                      const Light* light, bool native_sphere,
                                      const MediumInterface* medium_interface) {
@@ -512,6 +585,9 @@ void Accelerator::fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ra
     case Kind::Analytic:
         rec.shape->fill_hit(t, ray, hit);
         break;
+    case Kind::Patches:
+        rec.patches->fill_hit(rh.hit.primID, rh.hit.u, rh.hit.v, t, ray, hit);
+        break;
     case Kind::Curve:
         rec.curves->fill_hit(rh.hit.primID, rh.hit.u, t, ray, hit);
         break;
@@ -525,7 +601,10 @@ void Accelerator::fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ra
     hit->medium = ray.medium;
     hit->world_from_instance = nullptr; // intersect() sets it for a hit in an instance
     hit->time = ray.time;
-    hit->area_light = rec.lights.empty() ? nullptr : rec.lights[rec.kind == Kind::Mesh ? rh.hit.primID : 0];
+    hit->area_light =
+        rec.lights.empty()
+            ? nullptr
+            : rec.lights[rec.kind == Kind::Mesh || rec.kind == Kind::Patches ? rh.hit.primID : 0];
 }
 
 float Accelerator::intersect_distance(const Ray& ray) const {

@@ -11,6 +11,7 @@
 #include <embree3/rtcore.h>
 
 #include "illum/geometry/analytic_shape.h"
+#include "illum/geometry/bilinear_patch.h"
 #include "illum/geometry/curves.h"
 #include "illum/geometry/surface_hit.h"
 #include "illum/geometry/triangle_mesh.h"
@@ -18,6 +19,12 @@
 #include "illum/texture/texture.h"
 
 namespace illum {
+
+// What Embree's callbacks for a bilinear patch mesh see: the patches and their cut-out (nullptr: opaque).
+struct PatchUserData {
+    const BilinearPatchMesh* mesh;
+    const FloatTexture* alpha;
+};
 
 class Accelerator {
 public:
@@ -34,6 +41,11 @@ public:
     std::uint32_t add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
                            std::vector<const Light*> lights, const FloatTexture* alpha = nullptr,
                            const MediumInterface* medium_interface = nullptr);
+    // Bilinear patches (pbrt-v4's "bilinearmesh") as Embree user geometry, one primitive per patch bounded
+    // by its corners' box; `lights` and `alpha` as for add_mesh.
+    std::uint32_t add_patches(std::unique_ptr<BilinearPatchMesh> patches, const Material* material,
+                              std::vector<const Light*> lights, const FloatTexture* alpha = nullptr,
+                              const MediumInterface* medium_interface = nullptr);
     // A sphere, disk or cylinder (its cut-out, if any, is the shape's alpha()) as Embree user geometry.
     // native_sphere: a whole round sphere (SphereShape::is_round()) becomes an Embree sphere point
     // instead. Only bench/shape_bench.cpp asks for it: the user geometry measured faster
@@ -109,7 +121,7 @@ public:
     std::size_t geometry_count() const { return records_.size(); }
 
 private:
-    enum class Kind : std::uint8_t { Mesh, NativeSphere, Analytic, Instance, Curve };
+    enum class Kind : std::uint8_t { Mesh, NativeSphere, Analytic, Instance, Curve, Patches };
     struct AlphaCutout {
         const TriangleMesh* mesh;
         const FloatTexture* alpha;
@@ -117,6 +129,8 @@ private:
     struct Record {
         Kind kind = Kind::Mesh;
         std::unique_ptr<TriangleMesh> mesh;
+        std::unique_ptr<BilinearPatchMesh> patches;
+        std::unique_ptr<PatchUserData> patch_geometry; // owned here; Embree holds a pointer to it
         std::unique_ptr<AnalyticShape> shape;
         std::unique_ptr<Curves> curves;
         const Material* material = nullptr;

@@ -80,7 +80,7 @@ public:
     SolidAnglePdf pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,
                       Normal3f n_hit) const override;
     // The density per unit world area with which sample_area() returns the world point p.
-    AreaPdf area_pdf(Point3f p) const;
+    AreaPdf area_pdf(Point3f p) const override;
 
     const Transform& world_from_object() const { return world_from_object_; }
     // Whether world_from_object is a similarity (then `scale()` is its uniform scale factor).

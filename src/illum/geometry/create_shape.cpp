@@ -5,6 +5,8 @@
 
 #include "illum/geometry/cylinder.h"
 #include "illum/geometry/disk.h"
+#include "illum/geometry/displace_mesh.h"
+#include "illum/geometry/loop_subdivision.h"
 #include "illum/geometry/ply.h"
 #include "illum/geometry/sphere.h"
 
@@ -72,45 +74,95 @@ std::unique_ptr<TriangleMesh> triangle_mesh(const ShapeDesc& s) {
     return mesh;
 }
 
-// Each bilinear patch (p00, p10, p01, p11) becomes the two triangles (p00, p10, p11) and (p00, p11, p01),
-// whose normals agree with the patch's dp/du x dp/dv: exact for planar patches, a two-triangle
-// approximation of curved ones.
-std::unique_ptr<TriangleMesh> bilinear_mesh(const ShapeDesc& s) {
-    auto mesh = std::make_unique<TriangleMesh>();
-    std::vector<int> idx = positions_and_indices(s, *mesh, 4);
-    for (std::size_t q = 0; q < idx.size(); q += 4) {
-        std::uint32_t a = idx[q], b = idx[q + 1], c = idx[q + 2], d = idx[q + 3];
-        mesh->indices.insert(mesh->indices.end(), {a, b, d, a, d, c});
-    }
-    vertex_data(s, *mesh);
-    if (mesh->uv.empty() && idx.size() == 4 && mesh->p.size() == 4)
-        mesh->uv = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+// pbrt-v4's bilinearmesh: four indices per patch (p00, p10, p01, p11), per-vertex "N" and "uv".
+std::unique_ptr<BilinearPatchMesh> bilinear_mesh(const ShapeDesc& s) {
+    TriangleMesh data;
+    std::vector<int> idx = positions_and_indices(s, data, 4);
+    vertex_data(s, data);
+    auto mesh = std::make_unique<BilinearPatchMesh>();
+    mesh->p = std::move(data.p);
+    mesh->n = std::move(data.n);
+    mesh->uv = std::move(data.uv);
+    mesh->indices.assign(idx.begin(), idx.end());
     return mesh;
 }
 
-std::unique_ptr<TriangleMesh> ply_mesh(const ShapeDesc& s, Diagnostics& diag) {
+// pbrt-v4's loopsubdiv: "levels" (default 3) of Loop subdivision of the triangles "indices" over "P", pushed
+// to the limit surface with its normals (loop_subdivision.h); "scheme" is read and ignored, as pbrt-v4 does.
+std::unique_ptr<TriangleMesh> loop_subdivision_mesh(const ShapeDesc& s) {
+    int levels = s.params.get_int("levels", 3);
+    if (levels < 0 || levels > 12)
+        throw Error(param_loc(s, "levels"),
+                    fmt::format("loopsubdiv levels must be in [0, 12], not {}", levels));
+    s.params.get_string("scheme", "loop");
+    if (!s.params.has("indices")) throw Error(s.loc, "loopsubdiv needs \"integer indices\"");
+    TriangleMesh given;
+    std::vector<int> idx = positions_and_indices(s, given, 3);
+    SubdividedMesh sub = loop_subdivide(given.p, idx, levels);
+    auto mesh = std::make_unique<TriangleMesh>();
+    mesh->p = std::move(sub.p);
+    mesh->n = std::move(sub.n);
+    mesh->indices = std::move(sub.indices);
+    return mesh;
+}
+
+// pbrt-v4's plymesh "displacement" (a float texture; a float is taken as a constant one): the mesh refined
+// until its edges are shorter than "edgelength" (default 1) times Option "displacementedgescale" in world
+// space, then displaced along its normals (displace_mesh.h).
+void displace_ply_mesh(const ShapeDesc& s, TriangleMesh& mesh, TextureParams& textures, float edge_scale) {
+    float edge = s.params.get_float("edgelength", 1) * edge_scale; // read, as pbrt-v4 does, even unused
+    const FloatTexture* d = textures.scalar(s.params, "displacement", std::nullopt);
+    if (!d) return;
+    SourceLocation loc = param_loc(s, "displacement");
+    if (!(edge > 0) || !std::isfinite(edge))
+        throw Error(
+            param_loc(s, "edgelength"),
+            fmt::format("plymesh edgelength times displacementedgescale must be positive, not {}", edge));
+    if (mesh.uv.empty()) throw Error(loc, "plymesh \"displacement\" needs the mesh's uv (as in pbrt-v4)");
+    try {
+        displace_mesh(mesh, *d, s.world_from_object, edge);
+    } catch (const Error& e) {
+        throw Error(loc, fmt::format("plymesh: {}", e.what()));
+    }
+}
+
+// pbrt-v4's plymesh: triangles become a triangle mesh and, without displacement, quads bilinear patches
+// (pbrt-v4 makes a BilinearPatchMesh of them); with displacement quads are split into two triangles first.
+// Fills g.mesh and/or g.patches; false when the file is missing or holds no faces.
+bool ply_mesh(const ShapeDesc& s, TextureParams& textures, float edge_scale, ShapeGeometry& g) {
+    Diagnostics& diag = textures.diagnostics();
     std::string file = s.params.get_string("filename", "");
     if (file.empty()) throw Error(s.loc, "plymesh needs \"string filename\"");
+    bool displaced = s.params.has("displacement");
     TriangleMeshData data;
     try {
-        data = read_ply(file);
+        data = read_ply(file, !displaced);
     } catch (const Error& e) {
         diag.missing_file(s.params.find("filename")->loc, e.what());
-        return nullptr;
+        return false;
     }
-    if (data.indices.empty()) {
-        diag.unsupported(s.loc, fmt::format("plymesh \"{}\" has no triangles and is skipped", file));
-        return nullptr;
+    if (data.indices.empty() && data.quads.empty()) {
+        diag.unsupported(s.loc, fmt::format("plymesh \"{}\" has no faces and is skipped", file));
+        return false;
     }
-    if (s.params.has("displacement"))
-        diag.unsupported(s.loc, "plymesh \"displacement\" (vertices displaced after subdivision to "
-                                "\"edgelength\") is ignored; a material's \"displacement\" bump-maps");
-    auto mesh = std::make_unique<TriangleMesh>();
-    mesh->p = std::move(data.positions);
-    mesh->n = std::move(data.normals);
-    mesh->uv = std::move(data.uvs);
-    mesh->indices.assign(data.indices.begin(), data.indices.end());
-    return mesh;
+    if (!data.quads.empty()) {
+        g.patches = std::make_unique<BilinearPatchMesh>();
+        g.patches->p = data.positions;
+        g.patches->n = data.normals;
+        g.patches->uv = data.uvs;
+        g.patches->indices.assign(data.quads.begin(), data.quads.end());
+    }
+    if (data.indices.empty()) {              // quads only, so no displacement
+        s.params.get_float("edgelength", 1); // read, as pbrt-v4 does, even unused
+        return true;
+    }
+    g.mesh = std::make_unique<TriangleMesh>();
+    g.mesh->p = std::move(data.positions);
+    g.mesh->n = std::move(data.normals);
+    g.mesh->uv = std::move(data.uvs);
+    g.mesh->indices.assign(data.indices.begin(), data.indices.end());
+    displace_ply_mesh(s, *g.mesh, textures, edge_scale);
+    return true;
 }
 
 std::unique_ptr<AnalyticShape> sphere(const ShapeDesc& s) {
@@ -154,7 +206,8 @@ const FloatTexture* alpha_of(const ShapeDesc& s, TextureParams& textures) {
 
 } // namespace
 
-std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& textures) {
+std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& textures,
+                                          float displacement_edge_scale) {
     if (!s.world_from_object.matrix().is_finite()) throw Error(s.loc, "shape transform is not finite");
     // A constant alpha of 0 removes the shape (pbrt-v4 does the same); any other alpha below 1 is a
     // cut-out.
@@ -165,10 +218,9 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
     if (s.type == "trianglemesh") {
         g.mesh = triangle_mesh(s);
     } else if (s.type == "bilinearmesh") {
-        g.mesh = bilinear_mesh(s);
+        g.patches = bilinear_mesh(s);
     } else if (s.type == "plymesh") {
-        g.mesh = ply_mesh(s, textures.diagnostics());
-        if (!g.mesh) return std::nullopt;
+        if (!ply_mesh(s, textures, displacement_edge_scale, g)) return std::nullopt;
     } else if (s.type == "sphere") {
         g.analytic = sphere(s);
     } else if (s.type == "disk") {
@@ -182,13 +234,19 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
             g.alpha = nullptr;
         }
         return g;
-    } else if (s.type == "loopsubdiv" || s.type == "cone" || s.type == "paraboloid" ||
-               s.type == "hyperboloid") {
+    } else if (s.type == "loopsubdiv") {
+        g.mesh = loop_subdivision_mesh(s);
+    } else if (s.type == "cone" || s.type == "paraboloid" || s.type == "hyperboloid") {
         textures.diagnostics().unsupported(
             s.loc, fmt::format("shape \"{}\" is not supported yet and is skipped", s.type));
         return std::nullopt;
     } else {
         throw Error(s.loc, fmt::format("unknown shape type \"{}\"", s.type));
+    }
+    if (g.patches) {
+        g.patches->flip_normal = flip_of(s);
+        g.patches->transform(s.world_from_object, s.reverse_orientation);
+        g.patches->finalize();
     }
     if (g.mesh) {
         g.mesh->flip_normal = flip_of(s);
@@ -198,7 +256,7 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
         if (s.reverse_orientation)
             for (Normal3f& n : g.mesh->n) n = -n;
         g.mesh->finalize();
-    } else {
+    } else if (g.analytic) {
         g.analytic->set_alpha(g.alpha);
     }
     return g;

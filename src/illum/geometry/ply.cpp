@@ -254,13 +254,13 @@ void read_file(const std::string& path, std::string& out) {
 
 } // namespace
 
-TriangleMeshData read_ply(const std::string& path) {
+TriangleMeshData read_ply(const std::string& path, bool keep_quads) {
     std::string data;
     read_file(path, data);
-    return parse_ply(data.data(), data.size(), path);
+    return parse_ply(data.data(), data.size(), path, keep_quads);
 }
 
-TriangleMeshData parse_ply(const char* data, size_t size, const std::string& name) {
+TriangleMeshData parse_ply(const char* data, size_t size, const std::string& name, bool keep_quads) {
     auto header_error = [&](int line, const std::string& msg) {
         throw Error(SourceLocation{name, line, line ? 1 : 0}, "bad PLY header: " + msg);
     };
@@ -460,6 +460,10 @@ TriangleMeshData parse_ply(const char* data, size_t size, const std::string& nam
                 }
                 if (poly.size() < 3) {
                     ++mesh.skipped_faces;
+                    continue;
+                }
+                if (keep_quads && poly.size() == 4) {
+                    mesh.quads.insert(mesh.quads.end(), {poly[0], poly[1], poly[3], poly[2]});
                     continue;
                 }
                 for (size_t j = 1; j + 1 < poly.size(); ++j) {

@@ -5,7 +5,7 @@
 // texture_v or texture_s texture_t; any order and any scalar type (char/uchar/short/ushort/int/uint/
 // float/double and the int8/uint8/int16/uint16/int32/uint32/float32/float64 aliases). Faces: a list
 // property vertex_indices (or vertex_index) with any count and index types; quads become two triangles
-// (0 1 2, 0 2 3) and larger polygons a fan; an optional per-face "face_indices" integer is kept for each
+// (0 1 2, 0 2 3), or bilinear patches when asked (keep_quads), and larger polygons a fan; an optional per-face "face_indices" integer is kept for each
 // triangle made from the face. Unknown elements and properties are skipped. Problems (missing file, bad
 // header, unsupported format, truncated data, an index out of range) throw illum::Error naming the file
 // and, where known, the element, item and (ASCII) line.
@@ -24,12 +24,15 @@ struct TriangleMeshData {
     std::vector<Point2f> uvs;      // empty, or one per position
     std::vector<int> indices;      // three per triangle, each in [0, positions.size())
     std::vector<int> face_indices; // empty, or one per triangle
-    size_t skipped_faces = 0;      // faces with fewer than 3 vertices, left out
+    // With keep_quads: four-vertex faces as bilinear patches, four indices each in pbrt-v4's order
+    // (v0 v1 v3 v2: p00 p10 p01 p11), instead of two triangles (their face_indices are not kept).
+    std::vector<int> quads;
+    size_t skipped_faces = 0; // faces with fewer than 3 vertices, left out
 };
 
-TriangleMeshData read_ply(const std::string& path);
+TriangleMeshData read_ply(const std::string& path, bool keep_quads = false);
 
 // Decodes PLY data already in memory; `name` is used in errors.
-TriangleMeshData parse_ply(const char* data, size_t size, const std::string& name);
+TriangleMeshData parse_ply(const char* data, size_t size, const std::string& name, bool keep_quads = false);
 
 } // namespace illum

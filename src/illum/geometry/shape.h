@@ -47,6 +47,9 @@ public:
     // along the unit direction wi.
     virtual SolidAnglePdf pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,
                               Normal3f n_hit) const;
+    // The density per unit area with which sample_area() returns the shape's point p (1 / area for the
+    // shapes that sample uniformly).
+    virtual AreaPdf area_pdf(Point3f) const { return AreaPdf(1 / area()); }
 
 protected:
     // Converts an area sample to a solid-angle one as seen from ctx (pdf_ω = pdf_A r² / |cos θ_l|).

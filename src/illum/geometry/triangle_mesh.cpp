@@ -12,7 +12,10 @@ float TriangleMesh::triangle_area(std::size_t tri) const {
 
 void TriangleMesh::transform(const Transform& world_from_object) {
     for (auto& q : p) q = world_from_object(q);
-    for (auto& m : n) m = normalize(world_from_object(m));
+    for (auto& m : n) {
+        m = world_from_object(m);
+        if (dot(m, m) > 0) m = normalize(m); // a zero normal (pbrt-v4 leaves some) stays zero
+    }
 }
 
 void TriangleMesh::finalize() {

@@ -125,7 +125,7 @@ std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2,
 }
 
 void DiffuseAreaLight::pdf_le(const Ray& ray, Normal3f n, AreaPdf* pos, SolidAnglePdf* dir) const {
-    *pos = AreaPdf(1 / shape_->area());
+    *pos = shape_->area_pdf(ray.o);
     float cos_theta = dot(Vector3f(n), ray.d) / length(ray.d);
     if (two_sided_)
         *dir = SolidAnglePdf(cosine_hemisphere_pdf(std::abs(cos_theta)) * 0.5f);

@@ -40,12 +40,13 @@ public:
     }
     // Φ = π A L for a one-sided Lambertian emitter, twice that for a two-sided one.
     Power3 power() const override;
-    AreaPdf pdf_le_position(const SurfaceHit&) const override { return AreaPdf(1 / shape_->area()); }
+    AreaPdf pdf_le_position(const SurfaceHit& hit) const override { return shape_->area_pdf(hit.p); }
     // A point uniform by area, a cosine-weighted direction about its normal (either side with
     // probability 1/2 when two-sided): flux = L cos θ / (p_A · cos θ / π) = π L / p_A (× 2 two-sided).
     std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
                                            const SampledWavelengths& lambda) const override;
-    // 1 / A and the cosine-weighted density about n (halved and on either side when two-sided).
+    // The shape's area density at the ray's origin (1 / A for uniform samplers) and the cosine-weighted
+    // density about n (halved and on either side when two-sided).
     void pdf_le(const Ray& ray, Normal3f n, AreaPdf* pos, SolidAnglePdf* dir) const override;
 
     // The radiance leaving the point of normal n and surface coordinates uv towards w.

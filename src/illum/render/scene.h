@@ -40,6 +40,7 @@ struct RenderRequest {
     bool disable_pixel_jitter = false;
     bool disable_wavelength_jitter = false;
     bool force_diffuse = false;
+    float displacement_edge_scale = 1; // scales plymesh's "edgelength" (displacement)
     // The sample sequences' seed: the Sampler's "seed", else Option "seed", else 0 (pbrt-v4's samplers take
     // the Option as their seed's default).
     std::uint64_t scene_seed() const { return sampler_seed ? *sampler_seed : seed.value_or(0); }

@@ -53,9 +53,11 @@ void read_scene_options(const ParamSet& options, RenderRequest& r, Diagnostics& 
                                                "cameraworld or world)",
                                                v));
         } else if (n == "displacementedgescale") {
-            number_value(p);
-            diag.unsupported(p.loc, "Option \"displacementedgescale\" is not used: illum does not tessellate "
-                                    "displaced surfaces");
+            double v = number_value(p);
+            if (!(v > 0) || !std::isfinite(v))
+                throw Error(p.loc,
+                            fmt::format("Option \"displacementedgescale\" must be positive, not {}", v));
+            r.displacement_edge_scale = float(v);
         } else if (n == "msereferenceimage" || n == "msereferenceout") {
             string_value(p);
             diag.unsupported(p.loc,

@@ -10,7 +10,9 @@
 //    only its floating-point rounding; illum renders in world space and checks the value;
 //  - "disabletexturefiltering" (bool): illum's textures are point-sampled already (no ray differentials),
 //    so true is what it does; checked and accepted.
-// "displacementedgescale", "msereferenceimage", "msereferenceout", "pixelstats" and "wavefront" are
+//  - "displacementedgescale" (number > 0): scales plymesh's "edgelength", the longest edge its displacement
+//    refines to (geometry/displace_mesh.h).
+// "msereferenceimage", "msereferenceout", "pixelstats" and "wavefront" are
 // recognised and warned (each names what it would do and why illum has none of it). Any other name, or a
 // value of the wrong kind, is an error at the option, as in pbrt-v4.
 #pragma once

@@ -244,10 +244,11 @@ private:
     }
 
     // A shape's geometry into the accelerator with its material; an emitting shape gets one light per
-    // triangle (pbrt-v4) or one for the whole analytic shape, `power` normalised by the exact area.
+    // triangle or bilinear patch (pbrt-v4) or one for the whole analytic shape, `power` normalised by the
+    // exact area.
     void add_shape(const ShapeDesc& s) {
         if (s.motion.animated && add_moving_shape(s)) return;
-        std::optional<ShapeGeometry> g = create_shape(s, textures_);
+        std::optional<ShapeGeometry> g = create_shape(s, textures_, scene_->request.displacement_edge_scale);
         if (!g) return;
         std::optional<AreaEmission> e;
         if (s.area_light >= 0) e = create_area_emission(desc_.area_lights.at(s.area_light), diag_);
@@ -273,6 +274,21 @@ private:
                 }
             }
             scene_->accelerator.add_mesh(std::move(g->mesh), material, std::move(tri_lights), g->alpha, mi);
+            if (!g->patches) return; // a plymesh may hold both triangles and quads
+        }
+        if (g->patches) {
+            std::vector<const Light*> patch_lights;
+            for (std::uint32_t i = 0; e && i < g->patches->patch_count(); ++i) {
+                scene_->light_shapes.push_back(std::make_unique<BilinearPatchShape>(g->patches.get(), i));
+                const AreaShape* shape = scene_->light_shapes.back().get();
+                auto light = e->make_light(shape, shape->area());
+                light->set_alpha(g->alpha);
+                set_light_media(*light, s, mi);
+                patch_lights.push_back(light.get());
+                scene_->lights.push_back(std::move(light));
+            }
+            scene_->accelerator.add_patches(std::move(g->patches), material, std::move(patch_lights),
+                                            g->alpha, mi);
             return;
         }
         const Light* light = nullptr;
