@@ -52,7 +52,7 @@ struct SceneDesc {
     std::vector<InstanceUse> instance_uses;
     std::map<std::string, MediumDesc> media; // MakeNamedMedium
 
-    std::vector<std::string> warnings; // recognised but unsupported features, with positions
+    std::vector<std::string> warnings;       // recognised but unsupported features, with positions
     std::vector<UnsupportedUse> unsupported; // the same, structured (illum info lists them)
 
     // Overrides the film's resolution (the command line's --resolution, tests rendering smaller).
