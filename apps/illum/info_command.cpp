@@ -1,5 +1,6 @@
 // `illum info scene.pbrt`: what a scene holds (shapes, triangles, materials, textures, lights, camera,
-// film, sampler, integrator) and every warning, without rendering. The scene is built (meshes loaded) so
+// film, sampler, integrator), every warning, and last the unsupported features it uses (grouped by kind,
+// with positions; "none" when there are none), without rendering. The scene is built (meshes loaded) so
 // that triangle counts and build warnings are those a render would see.
 #include <algorithm>
 #include <fmt/core.h>
@@ -23,6 +24,24 @@ std::string counts(const std::map<std::string, int>& m) {
     std::string s;
     for (const auto& [k, v] : m) s += fmt::format("{}{} {}", s.empty() ? "" : ", ", v, k);
     return s.empty() ? "none" : s;
+}
+
+// The closing section: every unsupported or approximated feature the scene uses, one line per kind with
+// its count and every position, or "none" (issue 13's target).
+void print_unsupported(const std::vector<UnsupportedUse>& uses) {
+    std::vector<UnsupportedKind> kinds = group_by_kind(uses);
+    if (kinds.empty()) {
+        fmt::print("unsupported features: none\n");
+        return;
+    }
+    fmt::print("unsupported features: {} kind{}, {} use{}\n", kinds.size(), kinds.size() == 1 ? "" : "s",
+               uses.size(), uses.size() == 1 ? "" : "s");
+    for (const UnsupportedKind& k : kinds) {
+        std::string at;
+        for (const SourceLocation& l : k.uses)
+            if (!l.file.empty()) at += (at.empty() ? "" : ", ") + l.to_string();
+        fmt::print("  {} x{}{}\n", k.what, k.uses.size(), at.empty() ? "" : " at " + at);
+    }
 }
 
 void run(const InfoArgs& args) {
@@ -82,6 +101,7 @@ void run(const InfoArgs& args) {
     }
     fmt::print("warnings    {}\n", scene->warnings.size());
     for (const auto& w : scene->warnings) fmt::print("warning: {}\n", w);
+    print_unsupported(scene->unsupported);
 }
 
 } // namespace

@@ -34,6 +34,7 @@ TEST(ModelMaterials, EveryModelRendersFromASceneFile) {
     for (const ModelSpec& spec : bxdf_models()) {
         std::string material = fmt::format("Material \"{}\"", spec.name);
         if (spec.name == "merl") material += R"( "string file" "synthetic:0.2")";
+        if (spec.name == "measured") material += R"( "string filename" "synthetic:0.2")";
         test::RenderSetup s;
         s.spp = 4;
         RenderResult r = test::render_pbrt(sphere_scene(material), s);

@@ -16,6 +16,7 @@ std::vector<GalleryEntry> gallery_entries() {
     for (const ModelSpec& m : bxdf_models()) {
         GalleryEntry e{m.name, {}};
         if (m.name == "merl") e.params["file"] = "synthetic:0.2"; // no measured file ships: a GGX-gold table
+        if (m.name == "measured") e.params["filename"] = "synthetic:0.2"; // an RGL table of a GGX conductor
         entries.push_back(e);
     }
     return entries;

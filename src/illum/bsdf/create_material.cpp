@@ -6,6 +6,7 @@
 
 #include "illum/bsdf/albedo.h"
 #include "illum/bsdf/hair_material.h"
+#include "illum/bsdf/measured_material.h"
 #include "illum/bsdf/pbrt_materials.h"
 #include "illum/bsdf/registry.h"
 #include "illum/bsdf/shared_bxdf_material.h"
@@ -59,12 +60,7 @@ public:
         if (type == "mix") return mix();
         if (type == "subsurface") return subsurface();
         if (type == "hair") return hair();
-        if (type == "measured") {
-            tex_.diagnostics().unsupported(
-                m_.loc, fmt::format("material \"{}\" is approximated by a grey diffuse one", type));
-            for (const Param& p : m_.params.params()) p.used = true;
-            return own(std::make_unique<DiffuseMaterial>(tex_.constant(Color3(0.5f))));
-        }
+        if (type == "measured") return measured();
         for (const MaterialAlias& a : kMaterialAliases)
             if (type == a.pbrt_name) return model(find_bxdf_model(a.model), true);
         for (const ModelSpec& spec : bxdf_models())
@@ -95,6 +91,21 @@ private:
         tex_.diagnostics().unsupported(
             p->loc, fmt::format("subsurface: a textured \"{}\" is not supported; its default is used", name));
         return std::nullopt;
+    }
+
+    // pbrt-v4's "measured" (measured_material.h): the tables of the "filename" RGL .bsdf file.
+    const Material* measured() {
+        const Param* p = m_.params.find("filename");
+        if (!p) throw Error(m_.loc, "material \"measured\" needs \"string filename\" (an RGL .bsdf file)");
+        std::string file = m_.params.get_string("filename", "");
+        std::shared_ptr<const RglBrdf> data;
+        try {
+            data = measured_brdf_data(file);
+        } catch (const Error& e) { // reported with the scene's other unreadable files
+            tex_.diagnostics().missing_file(p->loc, e.what());
+            return own(std::make_unique<DiffuseMaterial>(tex_.constant(Color3(0.5f))));
+        }
+        return own(std::make_unique<MeasuredMaterial>(std::move(data)));
     }
 
     // pbrt-v4's "subsurface" (subsurface_material.h): the medium inside from the parameters, as pbrt-v4

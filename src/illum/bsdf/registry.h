@@ -259,6 +259,10 @@ ParamValues resolve_params(const ModelSpec& model, const ParamSet& params,
 ParamSet params_from_text(const ModelSpec& model, const std::map<std::string, std::string>& params);
 ParamValues resolve_params(const ModelSpec& model, const std::map<std::string, std::string>& params);
 std::unique_ptr<BxDF> make_bxdf(const std::string& model, const std::map<std::string, std::string>& params);
+// The tables of pbrt-v4's "measured" material: an RGL `.bsdf` file, or for `synthetic:ALPHA` a GGX
+// conductor tabulated in that layout (cached per α). Throws illum::Error naming the file.
+struct RglBrdf;
+std::shared_ptr<const RglBrdf> measured_brdf_data(const std::string& filename);
 // The interior index used by reciprocity checks (1 when the model has none).
 float model_eta(const ModelSpec& model, const ParamValues& values);
 

@@ -21,6 +21,7 @@
 #include "illum/medium/medium.h"
 #include "illum/render/sampler.h"
 #include "illum/texture/texture.h"
+#include "illum/util/diagnostics.h"
 #include "illum/util/error.h"
 
 namespace illum {
@@ -85,6 +86,7 @@ public:
     const Medium* camera_medium = nullptr;
     RenderRequest request;
     std::vector<std::string> warnings;
+    std::vector<UnsupportedUse> unsupported; // every unsupported feature used, with its position
 
     // Motion blur: the shutter interval (the camera's "shutteropen", "shutterclose"), whether anything
     // moves (the camera or some geometry; only then does a camera sample draw a time, so a still scene

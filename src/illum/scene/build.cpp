@@ -56,8 +56,9 @@ public:
         add_instances();
         diag_.throw_if_files_missing();
         report_unused_parameters();
-        diag_.add_warnings(desc_.warnings);
+        diag_.add_warnings(desc_.warnings, desc_.unsupported);
         scene_->warnings = diag_.warnings();
+        scene_->unsupported = diag_.unsupported_uses();
         scene_->finalize();
         return std::move(scene_);
     }

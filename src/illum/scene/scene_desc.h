@@ -9,6 +9,7 @@
 
 #include "illum/math/transform.h"
 #include "illum/param/entity.h"
+#include "illum/util/diagnostics.h"
 #include "illum/util/error.h"
 
 namespace illum {
@@ -51,7 +52,8 @@ struct SceneDesc {
     std::vector<InstanceUse> instance_uses;
     std::map<std::string, MediumDesc> media; // MakeNamedMedium
 
-    std::vector<std::string> warnings; // recognised but unsupported features, with positions
+    std::vector<std::string> warnings;       // recognised but unsupported features, with positions
+    std::vector<UnsupportedUse> unsupported; // the same, structured (illum info lists them)
 
     // Overrides the film's resolution (the command line's --resolution, tests rendering smaller).
     void set_film_resolution(int width, int height) {

@@ -10,13 +10,28 @@
 
 namespace illum {
 
+// One use of a recognised but unsupported (or approximated, or ignored) feature: where the scene uses it
+// and what illum does instead. Uses with the same `what` are one kind (`illum info` groups them).
+struct UnsupportedUse {
+    SourceLocation loc;
+    std::string what;
+};
+
+// The uses of one kind of unsupported feature (one `what`), in the order met.
+struct UnsupportedKind {
+    std::string what;
+    std::vector<SourceLocation> uses;
+};
+// Groups uses by their text, kinds in the order first met.
+std::vector<UnsupportedKind> group_by_kind(const std::vector<UnsupportedUse>& uses);
+
 class Diagnostics {
 public:
     explicit Diagnostics(bool strict = false) : strict_(strict) {}
 
     bool strict() const { return strict_; }
     // A recognised feature that illum does not support: one warning per distinct text, or an error under
-    // --strict.
+    // --strict. Each distinct (position, text) is also recorded as an UnsupportedUse.
     void unsupported(const SourceLocation& loc, const std::string& what);
     // A file that could not be read: recorded here; throw_if_files_missing() raises them all at once.
     void missing_file(const SourceLocation& loc, const std::string& message);
@@ -25,13 +40,15 @@ public:
     void throw_if_files_missing() const;
 
     const std::vector<std::string>& warnings() const { return warnings_; }
-    void add_warnings(const std::vector<std::string>& w) {
-        warnings_.insert(warnings_.begin(), w.begin(), w.end());
-    }
+    // Warnings made elsewhere (the parser's, SceneDesc::warnings), placed first, and their uses.
+    void add_warnings(const std::vector<std::string>& w, const std::vector<UnsupportedUse>& uses = {});
+    // Every unsupported feature the scene uses, in the order met (the added ones first).
+    const std::vector<UnsupportedUse>& unsupported_uses() const { return uses_; }
 
 private:
     bool strict_ = false;
     std::vector<std::string> warnings_;
+    std::vector<UnsupportedUse> uses_;
     std::vector<Error> missing_;
 };
 

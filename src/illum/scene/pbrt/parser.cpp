@@ -145,6 +145,7 @@ private:
     void warn(const SourceLocation& loc, const std::string& message) {
         if (options_.strict) throw Error(loc, message + " (unsupported; --strict)");
         sc_.warnings.push_back(loc.to_string() + ": " + message);
+        sc_.unsupported.push_back({loc, message});
     }
 
     std::string read_string(FileFrame& f, const Token& directive, const char* what) {
