@@ -11,8 +11,8 @@
 
 #include "illum/bsdf/material.h"
 #include "illum/camera/camera.h"
-#include "illum/camera/film.h"
 #include "illum/camera/camera_motion.h"
+#include "illum/camera/film.h"
 #include "illum/camera/filter.h"
 #include "illum/camera/sensor.h"
 #include "illum/geometry/accelerator.h"
@@ -91,6 +91,9 @@ public:
     float shutter_open = 0, shutter_close = 1;
     bool has_motion = false;
     CameraMotion camera_motion;
+    // Whether some material filters its textures over the footprint (Material::needs_texture_differentials):
+    // only then do camera rays carry differentials (render/texture_footprint.h).
+    bool texture_filtering = false;
     // The time of a sample, u uniform in [0, 1): pbrt-v4's CameraBase::SampleTime, lerp(u, open, close).
     float sample_time(float u) const { return (1 - u) * shutter_open + u * shutter_close; }
     // A camera ray at the time `time`: where the (moving) camera is then, carrying that time.
