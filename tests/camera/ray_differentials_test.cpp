@@ -178,7 +178,7 @@ protected:
         EXPECT_TRUE(scene_->intersect(cr->ray, &b.hit));
         if (rd) {
             d.scale(cr->ray, kScale);
-            compute_footprint(b.hit, d, *scene_->camera, 64);
+            compute_footprint(b.hit, d, *scene_, 64);
         }
         if (reflect_it) {
             b.wi = reflect(b.hit.wo, Vector3f(b.hit.ns));

@@ -83,6 +83,15 @@ TEST(TextureFiltering, OnlyMaterialsWithFilteredTexturesAskForDifferentials) {
     EXPECT_GE(total, 4);
 }
 
+TEST(TextureFiltering, OptionDisablesIt) {
+    std::string text = scene_text("ewa");
+    auto scene = build_scene(parse_pbrt_string("Option \"bool disabletexturefiltering\" true\n" + text,
+                                               "texture-filtering.pbrt", kDir));
+    EXPECT_FALSE(scene->texture_filtering);
+    for (const auto& m : scene->materials) EXPECT_FALSE(m->needs_texture_differentials);
+    EXPECT_TRUE(scene->warnings.empty());
+}
+
 TEST(TextureFiltering, ScenesWithoutFilteredTexturesCarryNoDifferentials) {
     auto scene = build_scene(builtin_cornell_box());
     EXPECT_FALSE(scene->texture_filtering);

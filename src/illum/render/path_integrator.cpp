@@ -60,7 +60,7 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         prev_bsdf = BSDF();
         tc.arena.reset(); // the previous vertex's BSDF is no longer needed
         if (needs_footprint(hit, rd)) [[unlikely]]
-            compute_footprint(hit, rd, *scene_.camera, sampler.samples_per_pixel());
+            compute_footprint(hit, rd, scene_, sampler.samples_per_pixel());
         BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
         if (!bsdf) {
             // A pure interface (no material): the path continues straight through, no scattering event. Like

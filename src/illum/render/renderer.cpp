@@ -115,7 +115,9 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     const bool spectral = options.spectral && integrator.radiometric();
     const bool radiometric = integrator.radiometric();
     const bool dispersive_camera = spectral && scene.camera->is_dispersive();
-    const float diff_scale = ray_differential_scale(options.spp > 0 ? options.spp : 1);
+    // pbrt-v4 scales the differentials to the samples' spacing only when the samples are jittered.
+    const float diff_scale =
+        scene.request.disable_pixel_jitter ? 1.0f : ray_differential_scale(options.spp > 0 ? options.spp : 1);
 
     const bool timed = options.time_budget > 0;
     std::uint64_t pixels = std::uint64_t(bounds.width()) * bounds.height();

@@ -38,6 +38,7 @@ struct RenderRequest {
     // Option directives (scene_options.h).
     std::optional<std::uint64_t> seed;
     bool disable_pixel_jitter = false;
+    bool disable_texture_filtering = false; // pbrt-v4's Option: every footprint is zero
     bool disable_wavelength_jitter = false;
     bool force_diffuse = false;
     // The sample sequences' seed: the Sampler's "seed", else Option "seed", else 0 (pbrt-v4's samplers take

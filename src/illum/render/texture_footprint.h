@@ -24,13 +24,16 @@ inline bool needs_footprint(const SurfaceHit& hit, const RayDifferentials& rd) {
 
 // Sets the hit's ∂p/∂x, ∂p/∂y and ∂u/∂x... (and its shading partials, which carrying differentials
 // through a specular bounce needs), from rd when it is valid and meets the tangent plane, else from the
-// camera's approximation for spp samples per pixel.
-inline void compute_footprint(SurfaceHit& hit, const RayDifferentials& rd, const Camera& camera, int spp) {
+// camera's approximation for spp samples per pixel (scaled as the camera rays' differentials are: not at
+// all when pixel jitter is disabled, as in pbrt-v4).
+inline void compute_footprint(SurfaceHit& hit, const RayDifferentials& rd, const Scene& scene, int spp) {
     ShadingPartials s = hit.world_partials();
     if (hit.partials_source) hit.set_shading_partials(s);
     Vector3f dpdx, dpdy;
     if (!(rd.valid && footprint_from_differentials(hit, rd, &dpdx, &dpdy)))
-        camera.approximate_dp_dxy(hit.p, hit.n, ray_differential_scale(spp), &dpdx, &dpdy);
+        scene.camera->approximate_dp_dxy(
+            hit.p, hit.n, scene.request.disable_pixel_jitter ? 1.0f : ray_differential_scale(spp), &dpdx,
+            &dpdy);
     set_uv_derivatives(hit, dpdx, dpdy, s.geometric_dpdu, s.geometric_dpdv);
 }
 
@@ -38,7 +41,7 @@ inline void compute_footprint(SurfaceHit& hit, const RayDifferentials& rd, const
 // camera's approximation where the material filters.
 inline void footprint_from_camera(SurfaceHit& hit, const Scene& scene, int spp) {
     if (hit.material && hit.material->needs_texture_differentials) [[unlikely]]
-        compute_footprint(hit, RayDifferentials{}, *scene.camera, spp);
+        compute_footprint(hit, RayDifferentials{}, scene, spp);
 }
 
 // The differentials of the ray a BSDF sample continues the path with: carried through perfectly specular

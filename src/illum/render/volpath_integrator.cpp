@@ -291,7 +291,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
 
         tc.arena.reset();
         if (needs_footprint(hit, rd)) [[unlikely]]
-            compute_footprint(hit, rd, *scene_.camera, sampler.samples_per_pixel());
+            compute_footprint(hit, rd, scene_, sampler.samples_per_pixel());
         BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
         if (!bsdf) {
             // A boundary between media with no surface: the path goes on unchanged.

@@ -52,7 +52,10 @@ public:
         scene_->camera_medium = medium_named(desc_.camera.medium, desc_.camera.medium_loc);
         build_materials();
         // Camera rays carry differentials only when some material filters its textures over them.
-        for (const auto& m : scene_->materials) scene_->texture_filtering |= m->needs_texture_differentials;
+        for (const auto& m : scene_->materials) {
+            if (scene_->request.disable_texture_filtering) m->needs_texture_differentials = false;
+            scene_->texture_filtering |= m->needs_texture_differentials;
+        }
         for (const ShapeDesc& s : desc_.shapes) add_shape(s);
         for (const LightDesc& l : desc_.lights) add_light(l);
         add_instances();
