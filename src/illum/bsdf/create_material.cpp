@@ -328,6 +328,8 @@ private:
         auto mix = std::make_unique<MixMaterial>(ab[0], ab[1], tex_.scalar(m_.params, "amount", 0.5f));
         mix->has_surface_detail =
             (ab[0] && ab[0]->has_surface_detail) || (ab[1] && ab[1]->has_surface_detail);
+        mix->needs_texture_differentials =
+            (ab[0] && ab[0]->needs_texture_differentials) || (ab[1] && ab[1]->needs_texture_differentials);
         return own(std::move(mix));
     }
 
@@ -389,15 +391,20 @@ const Material* create_material(const EntityDesc& m, const std::string& type, Ma
     // pbrt-v4 reads "displacement" and "normalmap" for every material but "mix" and "interface" (and its
     // "hair", which has neither); those leave them to the unused-parameter warning.
     const bool detail = type != "mix" && type != "interface" && type != "hair";
+    const int footprint_uses = ctx.textures.footprint_uses();
     std::unique_ptr<const SurfaceDetail> surface_detail =
         detail ? read_surface_detail(m, ctx.textures) : nullptr;
     const Material* made = MaterialMaker(m, ctx).make(type);
-    if (surface_detail) {
+    const bool filters = ctx.textures.footprint_uses() > footprint_uses;
+    if (surface_detail || filters) {
         // The material just made is among the owned ones (the last, or before its inner parts).
         for (auto it = ctx.owned.rbegin(); it != ctx.owned.rend(); ++it)
             if (it->get() == made) {
-                (*it)->surface_detail = std::move(surface_detail);
-                (*it)->has_surface_detail = true;
+                if (filters) (*it)->needs_texture_differentials = true;
+                if (surface_detail) {
+                    (*it)->surface_detail = std::move(surface_detail);
+                    (*it)->has_surface_detail = true;
+                }
                 break;
             }
     }

@@ -41,6 +41,10 @@ public:
     // without detail pays.
     std::unique_ptr<const SurfaceDetail> surface_detail;
     bool has_surface_detail = false;
+    // Whether a texture of this material (or, for a mix, of a component) filters over the hit's footprint
+    // (TextureParams::mark_footprint): only then does the integrator compute the hit's ray differentials
+    // (render/texture_footprint.h), so scenes without such textures pay one test per hit.
+    bool needs_texture_differentials = false;
 };
 
 // Resolves the hit's material (a mix to its component) and applies that material's surface detail to the

@@ -51,6 +51,22 @@ std::optional<CameraRay> PerspectiveCamera::generate_ray(Point2f p, Point2f u_le
     return CameraRay{{world_from_camera_(r.o), normalize(world_from_camera_(r.d)), kInfinity}};
 }
 
+std::optional<CameraRay> PerspectiveCamera::generate_ray_differential(Point2f p, Point2f u_lens, float lambda,
+                                                                      RayDifferentials* rd) const {
+    std::optional<CameraRay> cr = generate_ray(p, u_lens, lambda);
+    // The neighbouring pixels' rays through the same lens point (pbrt-v4's PerspectiveCamera).
+    Ray rx = thin_lens({0, 0, 0}, normalize(Vector3f{ax_ + bx_ * (p.x + 1), ay_ + by_ * p.y, 1}),
+                       lens_radius_, focal_distance_, u_lens);
+    Ray ry = thin_lens({0, 0, 0}, normalize(Vector3f{ax_ + bx_ * p.x, ay_ + by_ * (p.y + 1), 1}),
+                       lens_radius_, focal_distance_, u_lens);
+    rd->rx_origin = world_from_camera_(rx.o);
+    rd->ry_origin = world_from_camera_(ry.o);
+    rd->rx_direction = normalize(world_from_camera_(rx.d));
+    rd->ry_direction = normalize(world_from_camera_(ry.d));
+    rd->valid = true;
+    return cr;
+}
+
 OrthographicCamera::OrthographicCamera(const Transform& world_from_camera, int width, int height,
                                        float lens_radius, float focal_distance, const Screen* screen)
     : world_from_camera_(world_from_camera), camera_from_world_(world_from_camera.inverse()),
@@ -63,6 +79,22 @@ std::optional<CameraRay> OrthographicCamera::generate_ray(Point2f p, Point2f u_l
     Point3f o{ax_ + bx_ * p.x, ay_ + by_ * p.y, 0};
     Ray r = thin_lens(o, {0, 0, 1}, lens_radius_, focal_distance_, u_lens);
     return CameraRay{{world_from_camera_(r.o), normalize(world_from_camera_(r.d)), kInfinity}};
+}
+
+std::optional<CameraRay> OrthographicCamera::generate_ray_differential(Point2f p, Point2f u_lens,
+                                                                       float lambda,
+                                                                       RayDifferentials* rd) const {
+    std::optional<CameraRay> cr = generate_ray(p, u_lens, lambda);
+    Ray rx = thin_lens({ax_ + bx_ * (p.x + 1), ay_ + by_ * p.y, 0}, {0, 0, 1}, lens_radius_, focal_distance_,
+                       u_lens);
+    Ray ry = thin_lens({ax_ + bx_ * p.x, ay_ + by_ * (p.y + 1), 0}, {0, 0, 1}, lens_radius_, focal_distance_,
+                       u_lens);
+    rd->rx_origin = world_from_camera_(rx.o);
+    rd->ry_origin = world_from_camera_(ry.o);
+    rd->rx_direction = normalize(world_from_camera_(rx.d));
+    rd->ry_direction = normalize(world_from_camera_(ry.d));
+    rd->valid = true;
+    return cr;
 }
 
 } // namespace illum

@@ -3,10 +3,13 @@
 // radiance). Camera space follows pbrt: +x right, +y up, +z forward in the image.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "illum/camera/camera_importance.h"
 #include "illum/geometry/ray.h"
+#include "illum/geometry/ray_differentials.h"
 #include "illum/math/transform.h"
 
 namespace illum {
@@ -33,6 +36,23 @@ public:
     // lens system blocks the ray.
     virtual std::optional<CameraRay> generate_ray(Point2f p_raster, Point2f u_lens,
                                                   float lambda_nm) const = 0;
+    // The ray and its differentials: the rays one pixel step away in x and y through the same lens point
+    // (pbrt-v4's GenerateRayDifferential). By default (pbrt-v4's CameraBase, for the spherical and
+    // realistic cameras) from rays 0.05 pixels away (-0.05 where that ray is blocked) extrapolated to
+    // one pixel; rd->valid is false when neither is possible. The perspective and orthographic cameras
+    // give the neighbouring pixels' rays themselves.
+    virtual std::optional<CameraRay> generate_ray_differential(Point2f p_raster, Point2f u_lens,
+                                                               float lambda_nm, RayDifferentials* rd) const;
+
+    // pbrt-v4's Approximate_dp_dxy, the footprint at a point a ray without differentials found (after a
+    // diffuse or glossy bounce, or a light path's): the camera's smallest differentials (found by
+    // init_differentials) as rays from the camera towards p, with p's tangent plane (normal n), scaled by
+    // `scale` (max(1/8, 1/sqrt(spp)), as the camera rays' are).
+    void approximate_dp_dxy(Point3f p, Normal3f n, float scale, Vector3f* dpdx, Vector3f* dpdy) const;
+    // pbrt-v4's FindMinimumDifferentials: the smallest change of origin and of direction (in the ray's own
+    // frame) of the differentials of 512 rays along the film's diagonal through the lens centre. Called
+    // once, when the scene is built (create_camera).
+    void init_differentials(const Transform& world_from_camera, int width, int height);
     // True when generate_ray's direction depends on the wavelength (a dispersive lens): a spectral
     // integrator then keeps only the hero wavelength, whose path the ray is.
     virtual bool is_dispersive() const { return false; }
@@ -49,7 +69,17 @@ public:
     // comes from; zero outside the film.
     virtual Importance we(const Ray& /*ray*/, Point2f* /*p_raster*/ = nullptr) const { return Importance(0); }
     virtual CameraRayPdf pdf_we(const Ray& /*ray*/) const { return {AreaPdf(0), SolidAnglePdf(0)}; }
+
+private:
+    Transform diff_world_from_camera_, diff_camera_from_world_;
+    Vector3f min_pos_dx_, min_pos_dy_, min_dir_dx_, min_dir_dy_;
 };
+
+// pbrt-v4's scale of camera ray differentials for spp samples per pixel: the samples' spacing,
+// 1/sqrt(spp), but at least 1/8 of a pixel.
+inline float ray_differential_scale(int spp) {
+    return std::max(0.125f, 1 / std::sqrt(float(std::max(spp, 1))));
+}
 
 // A perspective camera with an optional thin lens (lens_radius > 0 focuses at focal_distance).
 // fov is the full angle of the shorter image axis (pbrt-v4). The default screen window spans
@@ -59,6 +89,8 @@ public:
     PerspectiveCamera(const Transform& world_from_camera, int width, int height, float fov_deg,
                       float lens_radius = 0, float focal_distance = 1e6f, const Screen* screen = nullptr);
     std::optional<CameraRay> generate_ray(Point2f p_raster, Point2f u_lens, float lambda_nm) const override;
+    std::optional<CameraRay> generate_ray_differential(Point2f p_raster, Point2f u_lens, float lambda_nm,
+                                                       RayDifferentials* rd) const override;
 
     static Screen default_screen(int width, int height);
 
@@ -82,6 +114,8 @@ public:
     OrthographicCamera(const Transform& world_from_camera, int width, int height, float lens_radius = 0,
                        float focal_distance = 1e6f, const Screen* screen = nullptr);
     std::optional<CameraRay> generate_ray(Point2f p_raster, Point2f u_lens, float lambda_nm) const override;
+    std::optional<CameraRay> generate_ray_differential(Point2f p_raster, Point2f u_lens, float lambda_nm,
+                                                       RayDifferentials* rd) const override;
 
     // Without a lens only: every ray is parallel to +z, so W_e = δ(ω - z) / A_film (A_film the screen
     // window's area in camera space): sample_wi projects the reference point onto the film plane, with

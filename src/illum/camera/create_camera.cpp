@@ -160,7 +160,9 @@ std::unique_ptr<Camera> realistic_camera(const CameraDesc& c, const FilmSettings
 
 } // namespace
 
-std::unique_ptr<Camera> create_camera(const CameraDesc& c, const FilmSettings& film, Diagnostics& diag) {
+namespace {
+
+std::unique_ptr<Camera> camera_of_type(const CameraDesc& c, const FilmSettings& film, Diagnostics& diag) {
     if (c.type == "realistic") return realistic_camera(c, film, diag);
     int w = film.width, h = film.height;
     Transform world_from_camera = c.camera_from_world.inverse();
@@ -196,6 +198,14 @@ std::unique_ptr<Camera> create_camera(const CameraDesc& c, const FilmSettings& f
         return std::make_unique<SphericalCamera>(world_from_camera, w, h, *mapping);
     }
     throw Error(c.loc, fmt::format("unknown camera type \"{}\"", c.type));
+}
+
+} // namespace
+
+std::unique_ptr<Camera> create_camera(const CameraDesc& c, const FilmSettings& film, Diagnostics& diag) {
+    std::unique_ptr<Camera> camera = camera_of_type(c, film, diag);
+    camera->init_differentials(c.camera_from_world.inverse(), film.width, film.height);
+    return camera;
 }
 
 } // namespace illum

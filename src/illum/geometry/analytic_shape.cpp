@@ -212,8 +212,8 @@ void AnalyticShape::fill_hit(float t, const Ray& ray, SurfaceHit* hit) const {
 ShadingPartials AnalyticShape::shading_partials(std::uint32_t, Point3f local) const {
     SurfacePoint sp = surface_at(Vec3d{local.x, local.y, local.z});
     SecondPartials d = partials_at(sp);
-    return {to_world(sp.dpdu), to_world(d.dpdv), world_normal_derivative(d.dndu),
-            world_normal_derivative(d.dndv)};
+    Vector3f dpdu = to_world(sp.dpdu), dpdv = to_world(d.dpdv);
+    return {dpdu, dpdv, world_normal_derivative(d.dndu), world_normal_derivative(d.dndv), dpdu, dpdv};
 }
 
 SurfaceHit AnalyticShape::alpha_point(const Crossing& c) const {

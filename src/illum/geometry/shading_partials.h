@@ -13,6 +13,9 @@ namespace illum {
 struct ShadingPartials {
     Vector3f dpdu, dpdv;
     Normal3f dndu, dndv;
+    // The surface's own ∂p/∂u, ∂p/∂v (pbrt-v4's Interaction::dpdu, dpdv), which vertex normals do not
+    // change: what the texture footprint's ∂u/∂x... are solved from (geometry/ray_differentials.h).
+    Vector3f geometric_dpdu, geometric_dpdv;
 };
 
 // A shape that can give the partials at one of its points, in its own (instance) space. `local` says

@@ -41,14 +41,22 @@ struct SurfaceHit : TextureEvalContext {
     const Medium* medium = nullptr;
     float time = 0; // the time of the ray that found the hit; rays spawned here keep it
 
-    // Sets dpdu, dpdv, dndu, dndv to the shape's shading partials at the hit, in world space.
-    void complete_shading_partials() {
-        if (!partials_source) return;
+    // The shape's partials at the hit, in world space (all zero when the shape gives none).
+    ShadingPartials world_partials() const {
+        if (!partials_source) return {};
         ShadingPartials s = partials_source->shading_partials(prim_id, local);
         if (world_from_instance) {
             const Transform& w = *world_from_instance;
-            s = {w(s.dpdu), w(s.dpdv), w(s.dndu), w(s.dndv)};
+            s = {w(s.dpdu), w(s.dpdv), w(s.dndu), w(s.dndv), w(s.geometric_dpdu), w(s.geometric_dpdv)};
         }
+        return s;
+    }
+    // Sets dpdu, dpdv, dndu, dndv to the shape's shading partials at the hit, in world space.
+    void complete_shading_partials() {
+        if (!partials_source) return;
+        set_shading_partials(world_partials());
+    }
+    void set_shading_partials(const ShadingPartials& s) {
         dpdu = s.dpdu;
         dpdv = s.dpdv;
         dndu = s.dndu;

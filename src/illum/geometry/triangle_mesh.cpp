@@ -102,6 +102,7 @@ ShadingPartials TriangleMesh::shading_partials(std::uint32_t tri, Point3f local)
         degenerate = !is_finite(s.dpdu) || !is_finite(s.dpdv) || length_squared(cross(s.dpdu, s.dpdv)) == 0;
     }
     if (degenerate) coordinate_system(Vector3f(face_normals[tri]), &s.dpdu, &s.dpdv);
+    s.geometric_dpdu = s.dpdu, s.geometric_dpdv = s.dpdv;
     if (n.empty()) return s; // ∂n/∂u = ∂n/∂v = 0
 
     // With vertex normals: ∂p/∂u made orthogonal to the interpolated normal ns, ∂p/∂v = ns × ∂p/∂u, and

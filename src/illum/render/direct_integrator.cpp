@@ -1,4 +1,5 @@
 #include "illum/render/direct_integrator.h"
+#include "illum/render/texture_footprint.h"
 
 namespace illum {
 
@@ -59,6 +60,7 @@ Radiance3 DirectIntegrator::radiance(Ray ray, ThreadContext& tc) const {
             break;
         }
         if (hit.area_light) l += hit.area_light->radiance(hit, hit.wo, tc.lambda) * beta;
+        footprint_from_camera(hit, scene_, tc.sampler.samples_per_pixel());
         BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
         if (!bsdf) {
             ray = hit.spawn_ray(ray.d);

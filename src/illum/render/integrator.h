@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "illum/geometry/ray.h"
+#include "illum/geometry/ray_differentials.h"
 #include "illum/radiometry/quantity.h"
 #include "illum/radiometry/sampled_wavelengths.h"
 #include "illum/render/sampler.h"
@@ -23,6 +24,9 @@ struct ThreadContext {
     // The current camera sample's wavelengths (spectral mode) or RGB mode's; a dispersive event terminates
     // the secondary ones.
     SampledWavelengths lambda;
+    // The current camera ray's differentials (valid only in scenes with filtered textures, set by the
+    // render loop; render/texture_footprint.h).
+    RayDifferentials camera_differentials;
     std::uint64_t rays = 0; // rays traced (closest hit and shadow)
 
     explicit ThreadContext(const Sampler& s) : sampler(s) {}

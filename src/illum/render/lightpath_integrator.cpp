@@ -14,6 +14,7 @@
 #include "illum/render/chunked_schedule.h"
 #include "illum/render/direct_view_mis.h"
 #include "illum/render/shadow_transmittance.h"
+#include "illum/render/texture_footprint.h"
 #include "illum/util/error.h"
 #include "illum/util/progress.h"
 
@@ -193,6 +194,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
         }
         if (!found) break;
         tc.arena.reset();
+        footprint_from_camera(hit, scene_, tc.sampler.samples_per_pixel());
         BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
         if (!bsdf) {
             ray = hit.spawn_ray(ray.d); // an interface without material: no vertex

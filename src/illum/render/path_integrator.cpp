@@ -1,6 +1,7 @@
 #include "illum/render/path_integrator.h"
 
 #include "illum/light/light.h"
+#include "illum/render/texture_footprint.h"
 
 namespace illum {
 
@@ -23,6 +24,7 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
     };
     LightSampleContext prev_ctx;
     Sampler& sampler = tc.sampler;
+    RayDifferentials rd = tc.camera_differentials; // valid only in scenes with filtered textures
 
     for (int depth = 0;;) {
         SurfaceHit hit;
@@ -57,6 +59,8 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
 
         prev_bsdf = BSDF();
         tc.arena.reset(); // the previous vertex's BSDF is no longer needed
+        if (needs_footprint(hit, rd)) [[unlikely]]
+            compute_footprint(hit, rd, scene_, sampler.samples_per_pixel());
         BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
         if (!bsdf) {
             // A pure interface (no material): the path continues straight through, no scattering event. Like
@@ -64,6 +68,7 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
             // previous vertex was blocked by the interface, so it did not find that light.
             specular_bounce = true;
             ray = hit.spawn_ray(ray.d);
+            if (rd.valid) rd.advance(hit.t);
             continue;
         }
         if (bsdf.flags() == kNone) break; // a black surface scatters nothing
@@ -116,6 +121,8 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         if (bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
         prev_ctx = ctx;
         ray = hit.spawn_ray(bs->wi);
+        if (rd.valid) [[unlikely]]
+            rd = continue_differentials(hit, rd, *bs);
 
         if (!beta.is_finite() || beta.is_black()) break;
         // Russian roulette after the first bounces: continue with probability min(1, max β·η²).

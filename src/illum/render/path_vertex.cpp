@@ -6,6 +6,7 @@
 #include "illum/medium/medium.h"
 #include "illum/medium/sample_majorant.h"
 #include "illum/render/shadow_transmittance.h"
+#include "illum/render/texture_footprint.h"
 
 namespace illum {
 
@@ -256,6 +257,7 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
             }
             break;
         }
+        footprint_from_camera(hit, ctx.scene, tc.sampler.samples_per_pixel());
         BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
         if (!bsdf) {
             // An interface between media: crossed, not a vertex.

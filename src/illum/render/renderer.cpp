@@ -16,6 +16,23 @@ namespace illum {
 
 namespace {
 
+// A camera ray with its differentials, scaled to the spacing of the pixel's samples.
+std::optional<CameraRay> camera_ray_differential(const Scene& scene, Point2f p_film, Point2f u_lens,
+                                                 float lambda, float scale, RayDifferentials* rd) {
+    std::optional<CameraRay> cr = scene.camera->generate_ray_differential(p_film, u_lens, lambda, rd);
+    if (!cr) rd->valid = false;
+    if (rd->valid) rd->scale(cr->ray, scale);
+    return cr;
+}
+
+// The differentials of a moving camera's ray, moved as the ray is (Scene::camera_ray_at).
+void move_differentials(const Scene& scene, float time, RayDifferentials* rd) {
+    Ray rx = scene.camera_ray_at(Ray{rd->rx_origin, rd->rx_direction}, time);
+    Ray ry = scene.camera_ray_at(Ray{rd->ry_origin, rd->ry_direction}, time);
+    rd->rx_origin = rx.o, rd->rx_direction = rx.d;
+    rd->ry_origin = ry.o, rd->ry_direction = ry.d;
+}
+
 struct Tile {
     int x0, y0, x1, y1;
 };
@@ -98,6 +115,9 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     const bool spectral = options.spectral && integrator.radiometric();
     const bool radiometric = integrator.radiometric();
     const bool dispersive_camera = spectral && scene.camera->is_dispersive();
+    // pbrt-v4 scales the differentials to the samples' spacing only when the samples are jittered.
+    const float diff_scale =
+        scene.request.disable_pixel_jitter ? 1.0f : ray_differential_scale(options.spp > 0 ? options.spp : 1);
 
     const bool timed = options.time_budget > 0;
     std::uint64_t pixels = std::uint64_t(bounds.width()) * bounds.height();
@@ -127,12 +147,20 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                 // wavelength its own way: the path keeps the hero only. A vignetted sample
                                 // adds zero radiance but still counts (its filter weight goes to the pixel).
                                 if (dispersive_camera) tc.lambda.terminate_secondary();
-                                std::optional<CameraRay> cr = scene.camera->generate_ray(
-                                    p_film, u_lens, spectral ? tc.lambda.hero() : kDLineNm);
+                                const float lambda_cam = spectral ? tc.lambda.hero() : kDLineNm;
+                                std::optional<CameraRay> cr;
+                                if (scene.texture_filtering) [[unlikely]]
+                                    cr = camera_ray_differential(scene, p_film, u_lens, lambda_cam,
+                                                                 diff_scale, &tc.camera_differentials);
+                                else
+                                    cr = scene.camera->generate_ray(p_film, u_lens, lambda_cam);
                                 // Motion blur: the sample's time, shared by every ray of its path.
-                                if (cr && scene.has_motion)
-                                    cr->ray =
-                                        scene.camera_ray_at(cr->ray, scene.sample_time(tc.sampler.get_1d()));
+                                if (cr && scene.has_motion) {
+                                    float time = scene.sample_time(tc.sampler.get_1d());
+                                    cr->ray = scene.camera_ray_at(cr->ray, time);
+                                    if (tc.camera_differentials.valid)
+                                        move_differentials(scene, time, &tc.camera_differentials);
+                                }
                                 Radiance3 v(0.0f);
                                 if (cr) v = integrator.estimate(cr->ray, tc) * cr->weight;
                                 tc.arena.reset();

@@ -39,6 +39,7 @@ struct RenderRequest {
     // Option directives (scene_options.h).
     std::optional<std::uint64_t> seed;
     bool disable_pixel_jitter = false;
+    bool disable_texture_filtering = false; // pbrt-v4's Option: every footprint is zero
     bool disable_wavelength_jitter = false;
     bool force_diffuse = false;
     float displacement_edge_scale = 1; // scales plymesh's "edgelength" (displacement)
@@ -94,6 +95,9 @@ public:
     float shutter_open = 0, shutter_close = 1;
     bool has_motion = false;
     CameraMotion camera_motion;
+    // Whether some material filters its textures over the footprint (Material::needs_texture_differentials):
+    // only then do camera rays carry differentials (render/texture_footprint.h).
+    bool texture_filtering = false;
     // The time of a sample, u uniform in [0, 1): pbrt-v4's CameraBase::SampleTime, lerp(u, open, close).
     float sample_time(float u) const { return (1 - u) * shutter_open + u * shutter_close; }
     // A camera ray at the time `time`: where the (moving) camera is then, carrying that time.

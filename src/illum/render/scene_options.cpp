@@ -45,7 +45,7 @@ void read_scene_options(const ParamSet& options, RenderRequest& r, Diagnostics& 
         } else if (n == "forcediffuse") {
             r.force_diffuse = bool_value(p);
         } else if (n == "disabletexturefiltering") {
-            bool_value(p); // illum's textures are point-sampled either way
+            r.disable_texture_filtering = bool_value(p);
         } else if (n == "rendercoordsys") {
             std::string v = string_value(p);
             if (v != "camera" && v != "cameraworld" && v != "world")

@@ -8,8 +8,8 @@
 //    (render/force_diffuse.h);
 //  - "rendercoordsys" ("camera", "cameraworld", "world"): the space pbrt-v4 renders in, which changes
 //    only its floating-point rounding; illum renders in world space and checks the value;
-//  - "disabletexturefiltering" (bool): illum's textures are point-sampled already (no ray differentials),
-//    so true is what it does; checked and accepted.
+//  - "disabletexturefiltering" (bool): no ray differentials, every footprint zero (textures read the
+//    finest image level, checkerboards are not filtered), as pbrt-v4's ComputeDifferentials then does.
 //  - "displacementedgescale" (number > 0): scales plymesh's "edgelength", the longest edge its displacement
 //    refines to (geometry/displace_mesh.h).
 // "msereferenceimage", "msereferenceout", "pixelstats" and "wavefront" are

@@ -1,5 +1,7 @@
 #include "illum/render/sppm_integrator.h"
 
+#include "illum/render/texture_footprint.h"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -262,6 +264,7 @@ void SppmRender::trace_camera_path(int x, int y, int iteration, const SampledWav
             }
         }
         t.arena.reset();
+        footprint_from_camera(hit, scene_, 1); // one camera ray per pixel and iteration
         BSDF bsdf = surface_bsdf(hit, lambda, t.arena);
         if (!bsdf) {
             ray = hit.spawn_ray(ray.d); // a pure interface

@@ -9,6 +9,7 @@
 #include "illum/medium/sample_majorant.h"
 #include "illum/render/direct_view_mis.h"
 #include "illum/render/shadow_transmittance.h"
+#include "illum/render/texture_footprint.h"
 
 namespace illum {
 
@@ -159,6 +160,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
     float eta_scale = 1;
     int depth = 0;
     LightSampleContext prev_ctx;
+    RayDifferentials rd = tc.camera_differentials; // valid only in scenes with filtered textures
 
     // Emission found by the unidirectional technique, weighed against light sampling from prev_ctx.
     auto add_emission = [&](SampledSpectrum le, const Light* light, const SurfaceHit* hit) {
@@ -251,6 +253,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
                         r_l = r_u / phase_pdf;
                         prev_ctx = LightSampleContext(p, {}, {});
                         ray = Ray{p, wi, kInfinity, ray.time, medium};
+                        rd.valid = false;
                         specular_bounce = false;
                         scattered = true;
                         return false;
@@ -291,10 +294,13 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
             add_emission(hit.area_light->radiance(hit, hit.wo, tc.lambda).s, hit.area_light, &hit);
 
         tc.arena.reset();
+        if (needs_footprint(hit, rd)) [[unlikely]]
+            compute_footprint(hit, rd, scene_, sampler.samples_per_pixel());
         BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
         if (!bsdf) {
             // A boundary between media with no surface: the path goes on unchanged.
             ray = hit.spawn_ray(ray.d);
+            if (rd.valid) rd.advance(hit.t);
             ++crossings;
             continue;
         }
@@ -321,6 +327,8 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         if (depth == 1) first_vertex_non_specular = !specular_bounce;
         if (bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
         ray = hit.spawn_ray(bs->wi);
+        if (rd.valid) [[unlikely]]
+            rd = continue_differentials(hit, rd, *bs);
 
         if (!beta.is_finite() || beta.is_black()) break;
         // Russian roulette on the MIS-weighted throughput, after the first bounces.

@@ -51,6 +51,11 @@ public:
         build_media();
         scene_->camera_medium = medium_named(desc_.camera.medium, desc_.camera.medium_loc);
         build_materials();
+        // Camera rays carry differentials only when some material filters its textures over them.
+        for (const auto& m : scene_->materials) {
+            if (scene_->request.disable_texture_filtering) m->needs_texture_differentials = false;
+            scene_->texture_filtering |= m->needs_texture_differentials;
+        }
         for (const ShapeDesc& s : desc_.shapes) add_shape(s);
         for (const LightDesc& l : desc_.lights) add_light(l);
         add_instances();
@@ -173,6 +178,7 @@ private:
             auto [it, fresh] = forced.try_emplace(m, nullptr);
             if (fresh) {
                 scene_->materials.push_back(std::make_unique<ForceDiffuseMaterial>(m));
+                scene_->materials.back()->needs_texture_differentials = m && m->needs_texture_differentials;
                 it->second = scene_->materials.back().get();
             }
             m = it->second;

@@ -107,6 +107,8 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
         throw Error(t.loc,
                     fmt::format("texture type must be \"float\" or \"spectrum\", not \"{}\"", t.value_type));
     Diagnostics& diag = params.diagnostics();
+    const int footprint_uses = params.footprint_uses();
+    bool filters = false; // whether this texture's own value depends on the footprint
     const ColorTexture* ct = nullptr;
     const FloatTexture* ft = nullptr;
     auto f = [&](const char* n, float d) { return params.scalar(t.params, n, d); };
@@ -130,6 +132,7 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
             ct = params.own(std::make_unique<MixTex<ColorTexture, Color3>>(c("tex1", Color3(0.0f)),
                                                                            c("tex2", Color3(1.0f)), a));
     } else if (t.type == "checkerboard") {
+        filters = true;
         int dim = t.params.get_int("dimension", 2);
         if (dim != 2 && dim != 3)
             throw Error(t.params.find("dimension")->loc,
@@ -183,15 +186,27 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
             diag.unsupported(t.loc, "wrap \"octahedralsphere\" is replaced by \"repeat\"");
         else if (wrap != "repeat")
             throw Error(t.params.find("wrap")->loc, fmt::format("unknown wrap mode \"{}\"", wrap));
+        // pbrt-v4's MIPMapFilterOptions: "filter" (default bilinear) and "maxanisotropy" (8, EWA only).
         std::string filter = t.params.get_string("filter", "bilinear");
-        if (filter != "bilinear" && filter != "point" && filter != "trilinear" && filter != "ewa")
+        MipFilter mf = MipFilter::Bilinear;
+        if (filter == "point")
+            mf = MipFilter::Point;
+        else if (filter == "trilinear")
+            mf = MipFilter::Trilinear;
+        else if (filter == "ewa" || filter == "EWA")
+            mf = MipFilter::EWA;
+        else if (filter != "bilinear")
             throw Error(t.params.find("filter")->loc, fmt::format("unknown texture filter \"{}\"", filter));
-        t.params.get_float("maxanisotropy", 8);
+        float max_anisotropy = t.params.get_float("maxanisotropy", 8);
+        if (!(max_anisotropy >= 1))
+            throw Error(t.params.find("maxanisotropy")->loc,
+                        fmt::format("maxanisotropy must be at least 1, not {}", max_anisotropy));
         float scale = t.params.get_float("scale", 1);
         bool invert = t.params.get_bool("invert", false);
         TextureMapping2D m = mapping(t);
-        if (auto image = load_image(t, enc, params)) {
-            ImageTextureData data(std::move(image), w, scale, invert);
+        if (auto image = load_image(t, enc, params); image && !image->empty()) {
+            filters = true;
+            FilteredImage data(MipMap(params.pyramid(image), mf, w, max_anisotropy), scale, invert);
             if (is_float)
                 ft = params.own(std::make_unique<ImageFloatTexture>(data, m));
             else
@@ -241,6 +256,8 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
     } else {
         throw Error(t.loc, fmt::format("unknown texture type \"{}\"", t.type));
     }
+    if (filters || params.footprint_uses() > footprint_uses)
+        params.mark_footprint(is_float ? (const void*)ft : ct);
     if (is_float)
         params.define(t.name, ft);
     else

@@ -20,11 +20,17 @@ inline int floor_to_int(float v) {
     return std::abs(f) < 1073741824.0f ? int(f) : 0;
 }
 
-// What a texture may depend on at a surface point.
+// What a texture may depend on at a surface point, and the point's footprint (pbrt-v4's
+// TextureEvalContext): how p and uv change from one pixel sample to the next in x and y (∂p/∂x, ∂p/∂y,
+// ∂u/∂x, ...), from ray differentials or the camera's approximation (render/texture_footprint.h). They are
+// computed only at hits whose material has a texture that filters (Material::needs_texture_differentials)
+// and are zero elsewhere: a zero footprint gives the finest image level, point sampling.
 struct TextureEvalContext {
     Point3f p;
     Normal3f n; // geometric normal, on the side the shape's orientation says is outside
     Point2f uv;
+    Vector3f dpdx, dpdy;
+    float dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
 };
 
 class ColorTexture {

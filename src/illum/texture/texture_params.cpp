@@ -22,6 +22,12 @@ const FloatTexture* TextureParams::constant(float v) {
     return own(std::make_unique<ConstantFloatTexture>(v));
 }
 
+std::shared_ptr<const MipPyramid> TextureParams::pyramid(const std::shared_ptr<const Image>& image) {
+    auto& p = pyramids_[image.get()];
+    if (!p) p = std::make_shared<const MipPyramid>(image);
+    return p;
+}
+
 std::optional<Color3> TextureParams::constant_color(const ParamSet& e, const std::string& name) const {
     const Param* p = e.find(name);
     if (!p) return std::nullopt;
@@ -43,7 +49,10 @@ const ColorTexture* TextureParams::color(const ParamSet& e, const std::string& n
     if (!p) return def ? constant(*def) : nullptr;
     if (p->type != ParamType::Texture) return constant(*constant_color(e, name));
     std::string t = e.get_texture(name);
-    if (auto it = color_named_.find(t); it != color_named_.end()) return it->second;
+    if (auto it = color_named_.find(t); it != color_named_.end()) {
+        if (uses_footprint(it->second)) ++footprint_uses_;
+        return it->second;
+    }
     if (float_named_.count(t))
         throw Error(p->loc, fmt::format("texture \"{}\" is a float texture; \"{}\" needs a spectrum texture",
                                         t, name));
@@ -56,7 +65,10 @@ const FloatTexture* TextureParams::scalar(const ParamSet& e, const std::string& 
     if (!p) return def ? constant(*def) : nullptr;
     if (p->type == ParamType::Texture) {
         std::string t = e.get_texture(name);
-        if (auto it = float_named_.find(t); it != float_named_.end()) return it->second;
+        if (auto it = float_named_.find(t); it != float_named_.end()) {
+            if (uses_footprint(it->second)) ++footprint_uses_;
+            return it->second;
+        }
         if (color_named_.count(t))
             throw Error(
                 p->loc,

@@ -9,10 +9,12 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "illum/image/image.h"
 #include "illum/param/entity.h"
+#include "illum/texture/mipmap.h"
 #include "illum/texture/texture.h"
 #include "illum/util/diagnostics.h"
 
@@ -48,6 +50,16 @@ public:
 
     // Images read so far, by "path|encoding", so a file used by several textures is read once.
     std::unordered_map<std::string, std::shared_ptr<const Image>>& images() { return images_; }
+    // The MIP pyramid of an image, made once per image.
+    std::shared_ptr<const MipPyramid> pyramid(const std::shared_ptr<const Image>& image);
+
+    // Textures whose value depends on the footprint (filtered images, checkerboards, and textures made
+    // from them). color() and scalar() count how often they hand one out, so that whoever resolves
+    // parameters (a material, a texture) can tell whether it needs ray differentials: compare the count
+    // before and after.
+    void mark_footprint(const void* texture) { footprint_.insert(texture); }
+    bool uses_footprint(const void* texture) const { return footprint_.count(texture) != 0; }
+    int footprint_uses() const { return footprint_uses_; }
 
 private:
     Diagnostics& diag_;
@@ -56,6 +68,9 @@ private:
     std::unordered_map<std::string, const ColorTexture*> color_named_;
     std::unordered_map<std::string, const FloatTexture*> float_named_;
     std::unordered_map<std::string, std::shared_ptr<const Image>> images_;
+    std::unordered_map<const Image*, std::shared_ptr<const MipPyramid>> pyramids_;
+    std::unordered_set<const void*> footprint_;
+    int footprint_uses_ = 0;
 };
 
 // An image file decoded as `encoding` says, read once per (file, encoding) into params.images(): an 8-bit
