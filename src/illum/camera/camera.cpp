@@ -13,6 +13,18 @@ Screen PerspectiveCamera::default_screen(int width, int height) {
 }
 
 namespace {
+
+// The neighbouring pixels' rays (camera space) as world-space ray differentials.
+RayDifferentials offset_rays_to_world(const Transform& world_from_camera, const Ray& rx, const Ray& ry) {
+    RayDifferentials rd;
+    rd.rx_origin = world_from_camera(rx.o);
+    rd.ry_origin = world_from_camera(ry.o);
+    rd.rx_direction = normalize(world_from_camera(rx.d));
+    rd.ry_direction = normalize(world_from_camera(ry.d));
+    rd.valid = true;
+    return rd;
+}
+
 // Raster x in [0, width] maps to screen x0..x1; raster y in [0, height] maps to y1..y0 (y down).
 void raster_to_screen(const Screen& s, int width, int height, float scale, float* ax, float* bx, float* ay,
                       float* by) {
@@ -59,11 +71,7 @@ std::optional<CameraRay> PerspectiveCamera::generate_ray_differential(Point2f p,
                        lens_radius_, focal_distance_, u_lens);
     Ray ry = thin_lens({0, 0, 0}, normalize(Vector3f{ax_ + bx_ * p.x, ay_ + by_ * (p.y + 1), 1}),
                        lens_radius_, focal_distance_, u_lens);
-    rd->rx_origin = world_from_camera_(rx.o);
-    rd->ry_origin = world_from_camera_(ry.o);
-    rd->rx_direction = normalize(world_from_camera_(rx.d));
-    rd->ry_direction = normalize(world_from_camera_(ry.d));
-    rd->valid = true;
+    *rd = offset_rays_to_world(world_from_camera_, rx, ry);
     return cr;
 }
 
@@ -89,11 +97,7 @@ std::optional<CameraRay> OrthographicCamera::generate_ray_differential(Point2f p
                        u_lens);
     Ray ry = thin_lens({ax_ + bx_ * p.x, ay_ + by_ * (p.y + 1), 0}, {0, 0, 1}, lens_radius_, focal_distance_,
                        u_lens);
-    rd->rx_origin = world_from_camera_(rx.o);
-    rd->ry_origin = world_from_camera_(ry.o);
-    rd->rx_direction = normalize(world_from_camera_(rx.d));
-    rd->ry_direction = normalize(world_from_camera_(ry.d));
-    rd->valid = true;
+    *rd = offset_rays_to_world(world_from_camera_, rx, ry);
     return cr;
 }
 

@@ -43,16 +43,19 @@ bool shape_keeps(const AnalyticShape& shape, const Crossing& c, const RTCRay& r,
     return alpha_keeps(shape.alpha()->evaluate(shape.alpha_point(c)), r, geom_id, std::uint32_t(c.root));
 }
 
+// A user geometry primitive's box, as Embree asks for it.
+void write_bounds(const Bounds3f& b, RTCBounds* out) {
+    out->lower_x = b.lo.x;
+    out->lower_y = b.lo.y;
+    out->lower_z = b.lo.z;
+    out->upper_x = b.hi.x;
+    out->upper_y = b.hi.y;
+    out->upper_z = b.hi.z;
+}
+
 // User geometry callbacks for analytic shapes (single rays only: illum traces rays one at a time).
 void shape_bounds(const RTCBoundsFunctionArguments* args) {
-    auto* shape = static_cast<const AnalyticShape*>(args->geometryUserPtr);
-    Bounds3f b = shape->bounds();
-    args->bounds_o->lower_x = b.lo.x;
-    args->bounds_o->lower_y = b.lo.y;
-    args->bounds_o->lower_z = b.lo.z;
-    args->bounds_o->upper_x = b.hi.x;
-    args->bounds_o->upper_y = b.hi.y;
-    args->bounds_o->upper_z = b.hi.z;
+    write_bounds(static_cast<const AnalyticShape*>(args->geometryUserPtr)->bounds(), args->bounds_o);
 }
 
 // The nearest crossing that passes the alpha test; pbrt-v4 continues the ray past a rejected one, so a
@@ -121,13 +124,7 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
 // User geometry callbacks for bilinear patches: one primitive per patch.
 void patch_bounds(const RTCBoundsFunctionArguments* args) {
     auto* g = static_cast<const PatchUserData*>(args->geometryUserPtr);
-    Bounds3f b = g->mesh->patch_bounds(args->primID);
-    args->bounds_o->lower_x = b.lo.x;
-    args->bounds_o->lower_y = b.lo.y;
-    args->bounds_o->lower_z = b.lo.z;
-    args->bounds_o->upper_x = b.hi.x;
-    args->bounds_o->upper_y = b.hi.y;
-    args->bounds_o->upper_z = b.hi.z;
+    write_bounds(g->mesh->patch_bounds(args->primID), args->bounds_o);
 }
 
 // The patch's crossing of the ray within (tnear, tfar) that passes the alpha test.
@@ -566,7 +563,8 @@ bool Accelerator::complete(const Found& found, const Ray& ray, SurfaceHit* hit) 
     hit->world_from_instance = &w;
     if (inst.moving) {
         // `moved` ends with this call, so the shading partials (which bump mapping asks for later) are taken
-        // now; a moving instance's hits are rare enough that every one can pay for them.
+        // now; a moving instance's hits are rare enough that every one can pay for them. (A filtered texture
+        // there, which needs the partials again for its footprint, reads its finest level.)
         hit->complete_shading_partials();
         hit->partials_source = nullptr;
         hit->world_from_instance = nullptr;

@@ -217,7 +217,7 @@ ShadingPartials BilinearPatchMesh::shading_partials(std::uint32_t patch, Point3f
     float u = local.x, v = local.y;
     auto c = corners(patch);
     TextureFrame f = texture_frame(*this, patch, u, v);
-    ShadingPartials s{f.dpdu, f.dpdv, {}, {}};
+    ShadingPartials s{f.dpdu, f.dpdv, {}, {}, f.dpdu, f.dpdv};
     // Weingarten: with ∂²p/∂u² = ∂²p/∂v² = 0 the second fundamental form has e = g = 0 and
     // f = n · ∂²p/∂u∂v; ∂n/∂u = (f F - e G) / (EG - F²) ∂p/∂u + (e F - f E) / (EG - F²) ∂p/∂v, and ∂n/∂v
     // likewise (PBR 4th ed. eq. 6.4), in the parameterisation of ∂p/∂u, ∂p/∂v, then carried to (s, t).

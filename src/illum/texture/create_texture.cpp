@@ -183,7 +183,7 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
         else if (wrap == "black")
             w = WrapMode::Black;
         else if (wrap == "octahedralsphere")
-            diag.unsupported(t.loc, "wrap \"octahedralsphere\" is replaced by \"repeat\"");
+            w = WrapMode::OctahedralSphere;
         else if (wrap != "repeat")
             throw Error(t.params.find("wrap")->loc, fmt::format("unknown wrap mode \"{}\"", wrap));
         // pbrt-v4's MIPMapFilterOptions: "filter" (default bilinear) and "maxanisotropy" (8, EWA only).

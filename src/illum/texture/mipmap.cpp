@@ -98,22 +98,7 @@ std::size_t MipPyramid::extra_texels() const {
 
 Color3 MipMap::texel(int level, int x, int y) const {
     const Image& im = pyramid_->level(level);
-    const int w = im.width(), h = im.height();
-    switch (wrap_) {
-    case WrapMode::Repeat:
-        x %= w;
-        if (x < 0) x += w;
-        y %= h;
-        if (y < 0) y += h;
-        break;
-    case WrapMode::Clamp:
-        x = std::clamp(x, 0, w - 1);
-        y = std::clamp(y, 0, h - 1);
-        break;
-    case WrapMode::Black:
-        if (x < 0 || y < 0 || x >= w || y >= h) return Color3(0.0f);
-        break;
-    }
+    if (!wrap_texel(wrap_, im.width(), im.height(), &x, &y)) return Color3(0.0f);
     return im(x, y);
 }
 

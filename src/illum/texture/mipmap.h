@@ -23,6 +23,7 @@
 // Wrapping (repeat, clamp, black) applies to every texel read.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <vector>
@@ -32,7 +33,51 @@
 
 namespace illum {
 
-enum class WrapMode { Repeat, Clamp, Black };
+enum class WrapMode { Repeat, Clamp, Black, OctahedralSphere };
+
+// A texel address outside a w×h image brought inside by the wrap mode; false: the texel is black. The
+// octahedral sphere's wrap (pbrt-v4's WrapMode::OctahedralSphere, for equal-area octahedral maps of the
+// sphere): past a left or right edge the address mirrors across that edge and across the middle row, past
+// the top or bottom edge across that edge and the middle column, so neighbours across the map's border
+// are the sphere's neighbours.
+inline bool wrap_texel(WrapMode mode, int w, int h, int* px, int* py) {
+    int& x = *px;
+    int& y = *py;
+    switch (mode) {
+    case WrapMode::Repeat:
+        x %= w;
+        if (x < 0) x += w;
+        y %= h;
+        if (y < 0) y += h;
+        return true;
+    case WrapMode::Clamp:
+        x = std::clamp(x, 0, w - 1);
+        y = std::clamp(y, 0, h - 1);
+        return true;
+    case WrapMode::Black:
+        return x >= 0 && y >= 0 && x < w && y < h;
+    case WrapMode::OctahedralSphere:
+        if (x < 0) {
+            x = -x;
+            y = h - 1 - y;
+        } else if (x >= w) {
+            x = 2 * w - 1 - x;
+            y = h - 1 - y;
+        }
+        if (y < 0) {
+            x = w - 1 - x;
+            y = -y;
+        } else if (y >= h) {
+            x = w - 1 - x;
+            y = 2 * h - 1 - y;
+        }
+        // (A filter wider than the image can still step past the far side: clamped there.)
+        x = std::clamp(x, 0, w - 1);
+        y = std::clamp(y, 0, h - 1);
+        return true;
+    }
+    return true;
+}
 enum class MipFilter { Point, Bilinear, Trilinear, EWA };
 
 // The pyramid of one image: level 0 shares the image, the others are made once (scene build).

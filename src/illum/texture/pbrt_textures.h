@@ -36,20 +36,7 @@ public:
 
 private:
     Color3 texel(int x, int y) const {
-        int w = image_->width(), h = image_->height();
-        switch (wrap_) {
-        case WrapMode::Repeat:
-            x = ((x % w) + w) % w;
-            y = ((y % h) + h) % h;
-            break;
-        case WrapMode::Clamp:
-            x = std::clamp(x, 0, w - 1);
-            y = std::clamp(y, 0, h - 1);
-            break;
-        case WrapMode::Black:
-            if (x < 0 || y < 0 || x >= w || y >= h) return Color3(0.0f);
-            break;
-        }
+        if (!wrap_texel(wrap_, image_->width(), image_->height(), &x, &y)) return Color3(0.0f);
         return (*image_)(x, y);
     }
     std::shared_ptr<const Image> image_;
