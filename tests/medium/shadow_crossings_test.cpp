@@ -17,7 +17,7 @@ namespace {
 // n slabs of thickness 0.1 between z = -k/10 planes, k = 0..n: slab i (between z = -i/10 and -(i+1)/10)
 // holds medium "m<i>" of σ_a = 0.5 (i + 1); each plane is an interface between its two neighbours, so a
 // ray down -z from z = 1 to z = -(n + 1)/10 crosses n + 1 surfaces. `blocker`: an opaque square in slab 0.
-std::unique_ptr<Scene> slab_stack(int n, bool blocker) {
+std::unique_ptr<Scene> slab_stack(int n, bool blocker, bool patches = false) {
     std::string text = "Camera \"perspective\"\nWorldBegin\n";
     for (int i = 0; i < n; ++i)
         text +=
@@ -30,11 +30,14 @@ std::unique_ptr<Scene> slab_stack(int n, bool blocker) {
         std::string inside = k < n ? fmt::format("m{}", k) : "";
         std::string outside = k > 0 ? fmt::format("m{}", k - 1) : "";
         double z = -0.1 * k;
-        text += fmt::format("AttributeBegin\nMediumInterface \"{}\" \"{}\"\n"
-                            "Shape \"trianglemesh\" \"point3 P\" [-5 -5 {z} 5 -5 {z} 5 5 {z} -5 5 {z}] "
-                            "\"integer indices\" [0 1 2 0 2 3] \"normal N\" [0 0 1 0 0 1 0 0 1 0 0 1]\n"
-                            "AttributeEnd\n",
-                            inside, outside, fmt::arg("z", z));
+        // (The same plane as a bilinear patch, corners p00 p10 p01 p11, for the patches' occlusion callback.)
+        std::string shape =
+            patches ? "Shape \"bilinearmesh\" \"point3 P\" [-5 -5 {z} 5 -5 {z} -5 5 {z} 5 5 {z}] "
+                      "\"integer indices\" [0 1 2 3] \"normal N\" [0 0 1 0 0 1 0 0 1 0 0 1]\n"
+                    : "Shape \"trianglemesh\" \"point3 P\" [-5 -5 {z} 5 -5 {z} 5 5 {z} -5 5 {z}] "
+                      "\"integer indices\" [0 1 2 0 2 3] \"normal N\" [0 0 1 0 0 1 0 0 1 0 0 1]\n";
+        text += fmt::format("AttributeBegin\nMediumInterface \"{}\" \"{}\"\n", inside, outside) +
+                fmt::format(fmt::runtime(shape), fmt::arg("z", z)) + "AttributeEnd\n";
     }
     if (blocker)
         text += "Material \"diffuse\"\nShape \"trianglemesh\" \"point3 P\" [-1 -1 -0.05 1 -1 -0.05 1 1 -0.05 "
@@ -68,6 +71,16 @@ TEST(ShadowCrossings, StackedMediaGiveTheProductOfTheirTransmittances) {
         else
             EXPECT_EQ(rays, std::uint64_t(1 + n + 2)) << "crossing by crossing after the gathering traversal";
     }
+}
+
+TEST(ShadowCrossings, BilinearPatchInterfacesLetTheRayThrough) {
+    // The same stack of 3 slabs with bilinear patches (Embree user geometry) as the interfaces.
+    auto scene = slab_stack(3, false, true);
+    std::uint64_t rays = 0;
+    SampledSpectrum t = transmittance_down(*scene, 3, &rays);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(t[c], std::exp(-0.1 * 0.5 * (1 + 2 + 3)), 2e-5);
+    EXPECT_EQ(rays, 1u);
+    EXPECT_TRUE(transmittance_down(*slab_stack(3, true, true), 3, &rays).is_black());
 }
 
 TEST(ShadowCrossings, AnOpaqueSurfaceAmongInterfacesBlocks) {

@@ -164,7 +164,45 @@ void patch_occluded(const RTCOccludedFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
     auto* g = static_cast<const PatchUserData*>(args->geometryUserPtr);
     auto* r = reinterpret_cast<RTCRay*>(args->ray);
-    if (patch_crossing(*g, args->primID, *r, args->geomID)) r->tfar = -std::numeric_limits<float>::infinity();
+    // A patch meets a line at most twice. A context filter (Accelerator::shadow_crossings) may let the ray
+    // through the first crossing; the second is then searched beyond it.
+    RTCRay rest = *r;
+    float t0 = 0;
+    for (int k = 0; k < 2; ++k) {
+        auto x = patch_crossing(*g, args->primID, rest, args->geomID);
+        if (!x) return;
+        const float t = t0 + x->t;
+        if (args->context->filter) {
+            RTCHit h{};
+            h.u = x->u;
+            h.v = x->v;
+            h.Ng_z = 1;
+            h.primID = args->primID;
+            h.geomID = args->geomID;
+            h.instID[0] = args->context->instID[0];
+            int valid = -1;
+            const float tfar = r->tfar;
+            r->tfar = t;
+            RTCFilterFunctionNArguments fa{&valid,
+                                           args->geometryUserPtr,
+                                           args->context,
+                                           reinterpret_cast<RTCRayN*>(r),
+                                           reinterpret_cast<RTCHitN*>(&h),
+                                           1};
+            rtcFilterOcclusion(args, &fa);
+            r->tfar = tfar;
+            if (!valid) {
+                rest.org_x = r->org_x + r->dir_x * t;
+                rest.org_y = r->org_y + r->dir_y * t;
+                rest.org_z = r->org_z + r->dir_z * t;
+                rest.tfar = r->tfar - t;
+                t0 = t;
+                continue;
+            }
+        }
+        r->tfar = -std::numeric_limits<float>::infinity();
+        return;
+    }
 }
 
 // Embree 3 asserts on a ray whose origin or direction has a NaN component or one beyond ±1.844e18 (its
