@@ -4,6 +4,9 @@
 // lens moves as one body.
 #pragma once
 
+#include <optional>
+
+#include "illum/camera/camera.h"
 #include "illum/geometry/ray.h"
 #include "illum/math/animated_transform.h"
 
@@ -21,35 +24,38 @@ public:
     // A ray from the camera at its start transform, moved to the camera at `time` (direction normalised).
     Ray at(const Ray& r, float time) const {
         if (!moves_at(time)) return r;
-        return carried(world_from_camera_.components(time).matrix() * camera_from_world_start_, r);
+        return carried(motion(time), r);
     }
-    // The other way, for the camera's importance (light tracing, bdpt, vcm): the camera model knows itself
-    // at its start transform only, so a point or ray seen by the camera at `time` is carried to where it
-    // lies relative to the start pose, and answers are carried back with at() / point_at().
-    Ray to_start(const Ray& r, float time) const {
-        if (!moves_at(time)) return r;
-        return carried(start_from(time), r);
+    // The camera's importance (light tracing, bdpt, vcm) at `time`: the camera model knows itself at its
+    // start transform only, so the reference point (or ray) is carried to where it lies relative to the
+    // start pose, and the answer carried back: one interpolation of the motion and one inverse each.
+    std::optional<CameraWiSample> sample_wi(const Camera& camera, Point3f p_ref, Point2f u,
+                                            float time) const {
+        if (!moves_at(time)) return camera.sample_wi(p_ref, u);
+        const Matrix4 m = motion(time);
+        std::optional<CameraWiSample> cs = camera.sample_wi(apply_point(start_from(m), p_ref), u);
+        if (cs) {
+            cs->p_lens = apply_point(m, cs->p_lens);
+            cs->n_lens = Normal3f(normalize(apply_direction(m, Vector3f(cs->n_lens))));
+            cs->wi = normalize(apply_direction(m, cs->wi));
+        }
+        return cs;
     }
-    Point3f to_start(Point3f p, float time) const {
-        if (!moves_at(time)) return p;
-        return apply_point(start_from(time), p);
-    }
-    Point3f point_at(Point3f p, float time) const {
-        if (!moves_at(time)) return p;
-        return apply_point(world_from_camera_.components(time).matrix() * camera_from_world_start_, p);
-    }
-    Vector3f direction_at(Vector3f d, float time) const {
-        if (!moves_at(time)) return d;
-        return normalize(
-            apply_direction(world_from_camera_.components(time).matrix() * camera_from_world_start_, d));
+    // The camera's densities for a ray leaving it at the ray's own time.
+    CameraRayPdf pdf_we(const Camera& camera, const Ray& r) const {
+        if (!moves_at(r.time)) return camera.pdf_we(r);
+        return camera.pdf_we(carried(start_from(motion(r.time)), r));
     }
 
 private:
     bool moves_at(float time) const { return is_moving() && time > world_from_camera_.start_time(); }
-    // world_from_camera(start) · camera_from_world(time): the inverse of the motion at `time`.
-    Matrix4 start_from(float time) const {
-        Matrix4 m = world_from_camera_.components(time).matrix() * camera_from_world_start_;
-        auto inv = inverse(m);
+    // world_from_camera(time) · camera_from_world(start): the start pose carried to the pose at `time`.
+    Matrix4 motion(float time) const {
+        return world_from_camera_.components(time).matrix() * camera_from_world_start_;
+    }
+    // Its inverse, back to the start pose.
+    static Matrix4 start_from(const Matrix4& motion) {
+        auto inv = inverse(motion);
         return inv ? *inv : Matrix4::identity();
     }
     static Point3f apply_point(const Matrix4& m, Point3f p) {

@@ -85,6 +85,32 @@ void shape_intersect(const RTCIntersectFunctionNArguments* args) {
     }
 }
 
+// Whether a user geometry's crossing at t (surface coordinates u, v) occludes the ray: a context filter
+// (Accelerator::shadow_crossings) sees it as Embree shows it a triangle's, with the ray's tfar at the hit,
+// and may let the ray pass; without one every crossing occludes.
+bool occlusion_accepted(const RTCOccludedFunctionNArguments* args, RTCRay* r, float t, float u, float v) {
+    if (!args->context->filter) return true;
+    RTCHit h{};
+    h.u = u;
+    h.v = v;
+    h.Ng_z = 1;
+    h.primID = args->primID;
+    h.geomID = args->geomID;
+    h.instID[0] = args->context->instID[0];
+    int valid = -1;
+    const float tfar = r->tfar;
+    r->tfar = t;
+    RTCFilterFunctionNArguments fa{&valid,
+                                   args->geometryUserPtr,
+                                   args->context,
+                                   reinterpret_cast<RTCRayN*>(r),
+                                   reinterpret_cast<RTCHitN*>(&h),
+                                   1};
+    rtcFilterOcclusion(args, &fa);
+    r->tfar = tfar;
+    return valid != 0;
+}
+
 void shape_occluded(const RTCOccludedFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
     auto* shape = static_cast<const AnalyticShape*>(args->geometryUserPtr);
@@ -95,27 +121,7 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
     for (int i = 0; i < n; ++i) {
         float t = float(c[i].t);
         if (!(t > r->tnear && t < r->tfar) || !shape_keeps(*shape, c[i], *r, args->geomID)) continue;
-        if (args->context->filter) {
-            // A context filter (Accelerator::shadow_crossings) sees the crossing as Embree shows it a
-            // triangle's, with the ray's tfar at the hit, and may let the ray pass.
-            RTCHit h{};
-            h.Ng_z = 1;
-            h.primID = args->primID;
-            h.geomID = args->geomID;
-            h.instID[0] = args->context->instID[0];
-            int valid = -1;
-            float tfar = r->tfar;
-            r->tfar = t;
-            RTCFilterFunctionNArguments fa{&valid,
-                                           args->geometryUserPtr,
-                                           args->context,
-                                           reinterpret_cast<RTCRayN*>(r),
-                                           reinterpret_cast<RTCHitN*>(&h),
-                                           1};
-            rtcFilterOcclusion(args, &fa);
-            r->tfar = tfar;
-            if (!valid) continue;
-        }
+        if (!occlusion_accepted(args, r, t, 0, 0)) continue;
         r->tfar = -std::numeric_limits<float>::infinity();
         return;
     }
@@ -172,33 +178,13 @@ void patch_occluded(const RTCOccludedFunctionNArguments* args) {
         auto x = patch_crossing(*g, args->primID, rest, args->geomID);
         if (!x) return;
         const float t = t0 + x->t;
-        if (args->context->filter) {
-            RTCHit h{};
-            h.u = x->u;
-            h.v = x->v;
-            h.Ng_z = 1;
-            h.primID = args->primID;
-            h.geomID = args->geomID;
-            h.instID[0] = args->context->instID[0];
-            int valid = -1;
-            const float tfar = r->tfar;
-            r->tfar = t;
-            RTCFilterFunctionNArguments fa{&valid,
-                                           args->geometryUserPtr,
-                                           args->context,
-                                           reinterpret_cast<RTCRayN*>(r),
-                                           reinterpret_cast<RTCHitN*>(&h),
-                                           1};
-            rtcFilterOcclusion(args, &fa);
-            r->tfar = tfar;
-            if (!valid) {
-                rest.org_x = r->org_x + r->dir_x * t;
-                rest.org_y = r->org_y + r->dir_y * t;
-                rest.org_z = r->org_z + r->dir_z * t;
-                rest.tfar = r->tfar - t;
-                t0 = t;
-                continue;
-            }
+        if (!occlusion_accepted(args, r, t, x->u, x->v)) {
+            rest.org_x = r->org_x + r->dir_x * t;
+            rest.org_y = r->org_y + r->dir_y * t;
+            rest.org_z = r->org_z + r->dir_z * t;
+            rest.tfar = r->tfar - t;
+            t0 = t;
+            continue;
         }
         r->tfar = -std::numeric_limits<float>::infinity();
         return;

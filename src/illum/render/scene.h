@@ -107,21 +107,13 @@ public:
         return moved;
     }
 
-    // The camera's importance for a path at `time` (a ray's own time for pdf_we): the camera model is built
-    // at its start transform, so for a moving camera points and rays are carried to it and back
-    // (CameraMotion::to_start); a static camera answers directly.
+    // The camera's importance for a path at `time` (a ray's own time for pdf_we), where a moving camera is
+    // then (CameraMotion::sample_wi); a static camera answers directly.
     std::optional<CameraWiSample> camera_sample_wi(Point3f p_ref, Point2f u, float time) const {
-        if (!has_motion) return camera->sample_wi(p_ref, u);
-        std::optional<CameraWiSample> cs = camera->sample_wi(camera_motion.to_start(p_ref, time), u);
-        if (cs) {
-            cs->p_lens = camera_motion.point_at(cs->p_lens, time);
-            cs->n_lens = Normal3f(camera_motion.direction_at(Vector3f(cs->n_lens), time));
-            cs->wi = camera_motion.direction_at(cs->wi, time);
-        }
-        return cs;
+        return has_motion ? camera_motion.sample_wi(*camera, p_ref, u, time) : camera->sample_wi(p_ref, u);
     }
     CameraRayPdf camera_pdf_we(const Ray& ray) const {
-        return camera->pdf_we(has_motion ? camera_motion.to_start(ray, ray.time) : ray);
+        return has_motion ? camera_motion.pdf_we(*camera, ray) : camera->pdf_we(ray);
     }
 
     // Storage that the above points into.
