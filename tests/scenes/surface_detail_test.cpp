@@ -73,6 +73,39 @@ TEST(BumpMap, SineDisplacementGivesTheAnalyticNormal) {
     }
 }
 
+// d(u, v) = a u².
+class QuadraticInU final : public FloatTexture {
+public:
+    explicit QuadraticInU(float a) : a_(a) {}
+    float evaluate(const TextureEvalContext& c) const override { return a_ * c.uv.x * c.uv.x; }
+
+private:
+    float a_;
+};
+
+TEST(BumpMap, StepsByHalfTheFootprintAsPbrtV4) {
+    // pbrt-v4's BumpMap steps by Δu = (|∂u/∂x| + |∂u/∂y|) / 2 (.0005 for a zero footprint); the forward
+    // difference of d = a u² is exactly a (2u + Δu), so the step shows in ∂p'/∂u's z.
+    const float a = 2;
+    QuadraticInU d(a);
+    SurfaceDetail detail(&d, nullptr);
+    const float u = 0.25f;
+    struct Case {
+        float dudx, dudy, step;
+    };
+    for (Case c :
+         {Case{0, 0, SurfaceDetail::kBumpDelta}, Case{0.02f, -0.01f, 0.015f}, Case{0, 0.1f, 0.05f}}) {
+        SurfaceHit h = plane_hit({u, 0.2f});
+        h.dudx = c.dudx;
+        h.dudy = c.dudy;
+        detail.apply(h);
+        EXPECT_NEAR(h.dpdu.z, a * (2 * u + c.step), 2e-5f) << c.dudx << " " << c.dudy;
+        EXPECT_NEAR(length(h.dpdv - Vector3f(0, 1, 0)), 0, 1e-6f); // d does not vary in v
+    }
+    EXPECT_TRUE(detail.bumps());
+    EXPECT_FALSE(SurfaceDetail(nullptr, constant_map(Color3(0.5f, 0.5f, 1))).bumps());
+}
+
 TEST(BumpMap, ConstantDisplacementLeavesTheNormal) {
     ConstantFloatTexture d(0.3f);
     SurfaceDetail detail(&d, nullptr);
@@ -325,6 +358,8 @@ Shape "cylinder" "float radius" 0.2
                                         type, kSquare, type, path("tilted.pfm"), type, path("tilted.pfm"));
         std::unique_ptr<Scene> s = build_scene(parse_pbrt_string(lit(world, {0, 0, 1}), "<test>", "."));
         EXPECT_EQ(s->warnings.size(), 0u) << type;
+        // A bump map steps by the hit's footprint, so camera rays carry differentials.
+        EXPECT_TRUE(s->texture_filtering) << type;
     }
 }
 

@@ -395,7 +395,9 @@ const Material* create_material(const EntityDesc& m, const std::string& type, Ma
     std::unique_ptr<const SurfaceDetail> surface_detail =
         detail ? read_surface_detail(m, ctx.textures) : nullptr;
     const Material* made = MaterialMaker(m, ctx).make(type);
-    const bool filters = ctx.textures.footprint_uses() > footprint_uses;
+    // A bump map's finite differences step by the footprint (pbrt-v4's BumpMap), so it needs one too.
+    const bool filters =
+        ctx.textures.footprint_uses() > footprint_uses || (surface_detail && surface_detail->bumps());
     if (surface_detail || filters) {
         // The material just made is among the owned ones (the last, or before its inner parts).
         for (auto it = ctx.owned.rbegin(); it != ctx.owned.rend(); ++it)

@@ -1,5 +1,7 @@
 #include "illum/bsdf/surface_detail.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "illum/math/frame.h"
@@ -27,7 +29,11 @@ void SurfaceDetail::normal_map_tangents(const SurfaceHit& hit, Vector3f* dpdu, V
 }
 
 void SurfaceDetail::bump_tangents(const SurfaceHit& hit, Vector3f* dpdu, Vector3f* dpdv) const {
-    const float du = kBumpDelta, dv = kBumpDelta;
+    // pbrt-v4's BumpMap: steps of half the footprint's extent in u and in v, .0005 where it is zero.
+    float du = .5f * (std::abs(hit.dudx) + std::abs(hit.dudy));
+    float dv = .5f * (std::abs(hit.dvdx) + std::abs(hit.dvdy));
+    if (du == 0) du = kBumpDelta;
+    if (dv == 0) dv = kBumpDelta;
     TextureEvalContext shifted = hit;
     shifted.p = hit.p + hit.dpdu * du;
     shifted.uv = {hit.uv.x + du, hit.uv.y};

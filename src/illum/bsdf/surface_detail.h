@@ -30,7 +30,7 @@ namespace illum {
 
 class SurfaceDetail {
 public:
-    // pbrt-v4's finite-difference step in u and v when a ray carries no differentials.
+    // pbrt-v4's finite-difference step in u and v where the hit has no footprint (∂u/∂x... all zero).
     static constexpr float kBumpDelta = .0005f;
 
     // Either may be null (not both, for the detail to do anything).
@@ -40,6 +40,8 @@ public:
     // shading normal ns and ∂p/∂u, ∂p/∂v by the perturbed ones. Leaves ns as it was where the perturbed
     // tangents are degenerate (parallel or not finite).
     void apply(SurfaceHit& hit) const;
+    // Whether the detail bumps by a displacement (whose finite differences step by the hit's footprint).
+    bool bumps() const { return displacement_ != nullptr; }
 
     // The perturbed ∂p/∂u, ∂p/∂v at a hit whose partials are complete, before the normal is formed from
     // them.

@@ -221,6 +221,7 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
         if (is_float == (t.type == "marble"))
             throw Error(t.loc, fmt::format("\"{}\" is a {} texture in pbrt-v4", t.type,
                                            t.type == "marble" ? "spectrum" : "float"));
+        filters = true; // the octaves finer than the footprint are left out
         TextureMapping3D m(t.world_from_texture.inverse());
         int octaves = t.params.get_int("octaves", 8);
         float omega = t.params.get_float("roughness", 0.5f);

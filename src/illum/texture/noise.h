@@ -3,9 +3,8 @@
 // "Improving Noise", SIGGRAPH 2002), fractional Brownian motion and turbulence (sums of octaves at
 // frequencies 1.99^i and amplitudes ω^i).
 //
-// pbrt-v4 chooses the number of octaves from the ray differentials' footprint (n = clamp(-1 - log2 |dp|,
-// 0, max)); illum carries no ray differentials yet, so a zero footprint is passed, which pbrt-v4 treats as
-// "all octaves", and that is what these sums compute.
+// As in pbrt-v4, the sums leave out the octaves finer than the hit's footprint (∂p/∂x, ∂p/∂y in the
+// texture's space): n = clamp(-1 - log2 max |∂p|, 0, max octaves); a zero footprint sums them all.
 #pragma once
 
 #include "illum/math/vector.h"
@@ -19,10 +18,13 @@ inline Point3f scaled(Point3f p, float s) { return {p.x * s, p.y * s, p.z * s}; 
 float perlin_noise(float x, float y = 0.5f, float z = 0.5f);
 inline float perlin_noise(Point3f p) { return perlin_noise(p.x, p.y, p.z); }
 
-// Σ_{i < octaves} ω^i noise(1.99^i p).
-float fbm(Point3f p, float omega, int octaves);
-// Σ_{i < octaves} ω^i |noise(1.99^i p)| + 0.2 ω^octaves (pbrt-v4's allowance for the octaves it leaves out,
-// which with a zero footprint is the last term's).
-float turbulence(Point3f p, float omega, int octaves);
+// Σ_{i < ⌊n⌋} ω^i noise(1.99^i p), plus the octave ⌊n⌋ weighted by smoothstep(0.3, 0.7) of n's fraction.
+float fbm(Point3f p, Vector3f dpdx, Vector3f dpdy, float omega, int max_octaves);
+// Σ_{i < ⌊n⌋} ω^i |noise(1.99^i p)|, the octave ⌊n⌋ blended from 0.2 to its |noise| by the same weight, and
+// 0.2 of the amplitude of each octave left out (pbrt-v4's allowance for |noise|'s mean).
+float turbulence(Point3f p, Vector3f dpdx, Vector3f dpdy, float omega, int max_octaves);
+// Every octave (a zero footprint).
+inline float fbm(Point3f p, float omega, int octaves) { return fbm(p, {}, {}, omega, octaves); }
+inline float turbulence(Point3f p, float omega, int octaves) { return turbulence(p, {}, {}, omega, octaves); }
 
 } // namespace illum

@@ -2,8 +2,8 @@
 // one for dots: "fbm" and "wrinkled" (fractional Brownian motion and turbulence; octaves, roughness = ω),
 // "windy" (|fbm(0.1 p, ω 0.5, 3 octaves)| · fbm(p, 0.5, 6)), "marble" (a colour spline at
 // 0.5 + 0.5 sin(p_y + variation · fbm(p)), p scaled by `scale`) and "dots" (polka dots of radius 0.35
-// jittered by noise in every cell whose noise is positive). All octaves are summed (noise.h: no ray
-// differentials).
+// jittered by noise in every cell whose noise is positive). The sums drop the octaves finer than the hit's
+// footprint in texture space (noise.h), as pbrt-v4 does.
 #pragma once
 
 #include <algorithm>
@@ -18,7 +18,9 @@ namespace illum {
 class FbmTexture final : public FloatTexture {
 public:
     FbmTexture(TextureMapping3D m, int octaves, float omega) : m_(m), octaves_(octaves), omega_(omega) {}
-    float evaluate(const TextureEvalContext& hit) const override { return fbm(m_.map(hit), omega_, octaves_); }
+    float evaluate(const TextureEvalContext& hit) const override {
+        return fbm(m_.map(hit), m_.dpdx(hit), m_.dpdy(hit), omega_, octaves_);
+    }
 
 private:
     TextureMapping3D m_;
@@ -30,7 +32,7 @@ class WrinkledTexture final : public FloatTexture {
 public:
     WrinkledTexture(TextureMapping3D m, int octaves, float omega) : m_(m), octaves_(octaves), omega_(omega) {}
     float evaluate(const TextureEvalContext& hit) const override {
-        return turbulence(m_.map(hit), omega_, octaves_);
+        return turbulence(m_.map(hit), m_.dpdx(hit), m_.dpdy(hit), omega_, octaves_);
     }
 
 private:
@@ -44,8 +46,9 @@ public:
     explicit WindyTexture(TextureMapping3D m) : m_(m) {}
     float evaluate(const TextureEvalContext& hit) const override {
         Point3f p = m_.map(hit);
-        float wind_strength = fbm(scaled(p, 0.1f), 0.5f, 3);
-        float wave_height = fbm(p, 0.5f, 6);
+        Vector3f dpdx = m_.dpdx(hit), dpdy = m_.dpdy(hit);
+        float wind_strength = fbm(scaled(p, 0.1f), dpdx * 0.1f, dpdy * 0.1f, 0.5f, 3);
+        float wave_height = fbm(p, dpdx, dpdy, 0.5f, 6);
         return std::abs(wind_strength) * wave_height;
     }
 
@@ -61,7 +64,8 @@ public:
         : m_(m), octaves_(octaves), omega_(omega), scale_(scale), variation_(variation) {}
     Color3 evaluate(const TextureEvalContext& hit) const override {
         Point3f p = scaled(m_.map(hit), scale_);
-        float marble = p.y + variation_ * fbm(p, omega_, octaves_);
+        float marble =
+            p.y + variation_ * fbm(p, m_.dpdx(hit) * scale_, m_.dpdy(hit) * scale_, omega_, octaves_);
         float t = 0.5f + 0.5f * std::sin(marble);
         static constexpr Color3 kColors[] = {{.58f, .58f, .6f}, {.58f, .58f, .6f}, {.58f, .58f, .6f},
                                              {.5f, .5f, .5f},   {.6f, .59f, .58f}, {.58f, .58f, .6f},
@@ -97,7 +101,8 @@ inline bool inside_polka_dot(Point2f st) {
 template <class Base, class Value>
 class DotsTex final : public Base {
 public:
-    DotsTex(const Base* inside, const Base* outside, TextureMapping2D m) : inside_(inside), outside_(outside), m_(m) {}
+    DotsTex(const Base* inside, const Base* outside, TextureMapping2D m)
+        : inside_(inside), outside_(outside), m_(m) {}
     Value evaluate(const TextureEvalContext& hit) const override {
         return inside_polka_dot(m_.map(hit)) ? inside_->evaluate(hit) : outside_->evaluate(hit);
     }
