@@ -296,6 +296,14 @@ TEST(Sampler, SobolGeneratorMatrix) {
     for (uint32_t i = 0; i < 8; ++i) EXPECT_EQ(sobol_dim1(i) * 0x1p-32, expected[i]);
     EXPECT_EQ(sobol_dim0(1) * 0x1p-32, 0.5);
     EXPECT_EQ(sobol_dim0(3) * 0x1p-32, 0.75);
+    // The reversed tables give the reversed dimension 1 of the reversed index, for every bit of it.
+    for (uint32_t b = 0; b < 32; ++b)
+        EXPECT_EQ(sobol_dim1_reversed(reverse_bits(1u << b)), reverse_bits(sobol_dim1(1u << b))) << b;
+    PCG32 rng;
+    for (int k = 0; k < 10000; ++k) {
+        uint32_t i = rng.uniform_uint32();
+        ASSERT_EQ(sobol_dim1_reversed(reverse_bits(i)), reverse_bits(sobol_dim1(i))) << i;
+    }
     // The nested uniform scramble is a bijection on aligned blocks: the first 2^k indices map onto one
     // aligned block of 2^k indices.
     for (int k = 0; k <= 12; ++k) {

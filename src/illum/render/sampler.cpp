@@ -76,11 +76,40 @@ constexpr std::array<std::array<uint32_t, 256>, 4> make_sobol_dim1_tables() {
 
 constexpr auto kSobolDim1 = make_sobol_dim1_tables();
 
+constexpr uint32_t reverse_bits_constexpr(uint32_t v) {
+    uint32_t r = 0;
+    for (int b = 0; b < 32; ++b) r |= ((v >> b) & 1u) << (31 - b);
+    return r;
+}
+
+// Bit j of byte b of reverse(i) is bit 31 - 8b - j of i, which contributes v_{31-8b-j}; reversed.
+constexpr std::array<std::array<uint32_t, 256>, 4> make_sobol_dim1_reversed_tables() {
+    std::array<uint32_t, 32> v{};
+    v[0] = 1u << 31;
+    for (int i = 1; i < 32; ++i) v[i] = v[i - 1] ^ (v[i - 1] >> 1);
+    std::array<std::array<uint32_t, 256>, 4> t{};
+    for (int b = 0; b < 4; ++b)
+        for (int k = 0; k < 256; ++k) {
+            uint32_t r = 0;
+            for (int j = 0; j < 8; ++j)
+                if (k & (1 << j)) r ^= reverse_bits_constexpr(v[31 - 8 * b - j]);
+            t[b][k] = r;
+        }
+    return t;
+}
+
+constexpr auto kSobolDim1Reversed = make_sobol_dim1_reversed_tables();
+
 } // namespace
 
 uint32_t sobol_dim1(uint32_t index) {
     return kSobolDim1[0][index & 0xff] ^ kSobolDim1[1][(index >> 8) & 0xff] ^
            kSobolDim1[2][(index >> 16) & 0xff] ^ kSobolDim1[3][index >> 24];
+}
+
+uint32_t sobol_dim1_reversed(uint32_t r) {
+    return kSobolDim1Reversed[0][r & 0xff] ^ kSobolDim1Reversed[1][(r >> 8) & 0xff] ^
+           kSobolDim1Reversed[2][(r >> 16) & 0xff] ^ kSobolDim1Reversed[3][r >> 24];
 }
 
 } // namespace sampling_detail

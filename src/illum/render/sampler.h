@@ -89,6 +89,10 @@ inline uint32_t sobol_dim0(uint32_t index) { return reverse_bits(index); }
 // Sobol dimension 1: XOR of the direction numbers v_i for the set bits i of index, with v_0 = 2^31 and
 // v_i = v_{i-1} ^ (v_{i-1} >> 1). Defined out of line with byte-wise tables.
 uint32_t sobol_dim1(uint32_t index);
+// The same, bit-reversed, of the bit-reversed index: reverse_bits(sobol_dim1(i)) from reverse_bits(i). The
+// map is linear over GF(2) either way, so it is tabulated alike; the Owen-scrambled sampler works on
+// reversed indices and values and saves two reversals.
+uint32_t sobol_dim1_reversed(uint32_t reversed_index);
 
 // The Laine-Karras hash (S. Laine, T. Karras, "Stratified Sampling for Stochastic Transparency", EGSR 2011)
 // with the constants Burley 2020 found to give better-mixed permutations. Each output bit depends only on
@@ -131,6 +135,7 @@ public:
             rng_.advance(2); // the first two numbers belong to get_pixel_2d()
         } else if (kind_ == SamplerKind::sobol) {
             pixel_hash_ = hash(seed_, pixel.x, pixel.y);
+            reversed_index_ = sampling_detail::reverse_bits(index_);
         } else {
             start_other(pixel);
         }
@@ -168,21 +173,24 @@ private:
         return mix_bits(pixel_hash_ + (uint64_t(dim) + 1) * 0x9e3779b97f4a7c15ULL);
     }
 
+    // Sample index_ of Owen-scrambled Sobol' dimensions (0, 1) with per-dimension seeds: the index is itself
+    // Owen-scrambled (shuffled), i = nested_uniform_scramble(index_), then each coordinate
+    // nested_uniform_scramble(sobol_dimk(i)). Kept in reversed bits where the Laine-Karras permutation wants
+    // them: LK(reverse(index_)) is reverse(i); sobol_dim0(i) = reverse(i), so x = reverse(LK(i)); y comes
+    // from sobol_dim1_reversed(reverse(i)). Three reversals for a 2D sample, two for 1D.
     float sobol_1d(uint32_t dim) const {
         using namespace sampling_detail;
         uint64_t h = dimension_hash(dim);
-        uint32_t i = nested_uniform_scramble(index_, uint32_t(h));
-        // sobol_dim0(i) = reverse_bits(i), so the scrambled value reverse(LK(reverse(reverse(i)))) needs only
-        // one reversal.
+        uint32_t i = reverse_bits(laine_karras_permutation(reversed_index_, uint32_t(h)));
         return bits_to_unit_float(reverse_bits(laine_karras_permutation(i, uint32_t(h >> 32))));
     }
 
     Point2f sobol_2d(uint32_t dim) const {
         using namespace sampling_detail;
         uint64_t h = dimension_hash(dim), h2 = mix_bits(h);
-        uint32_t i = nested_uniform_scramble(index_, uint32_t(h));
-        uint32_t x = reverse_bits(laine_karras_permutation(i, uint32_t(h >> 32)));
-        uint32_t y = nested_uniform_scramble(sobol_dim1(i), uint32_t(h2));
+        uint32_t i_reversed = laine_karras_permutation(reversed_index_, uint32_t(h));
+        uint32_t x = reverse_bits(laine_karras_permutation(reverse_bits(i_reversed), uint32_t(h >> 32)));
+        uint32_t y = reverse_bits(laine_karras_permutation(sobol_dim1_reversed(i_reversed), uint32_t(h2)));
         return {bits_to_unit_float(x), bits_to_unit_float(y)};
     }
 
@@ -208,6 +216,7 @@ private:
     int spp_;
     uint64_t seed_;
     uint32_t index_ = 0, dimension_ = 1;
+    uint32_t reversed_index_ = 0; // sobol: reverse_bits(index_)
     uint64_t pixel_hash_ = 0;
     PCG32 rng_, pixel_rng_;
 
