@@ -307,10 +307,10 @@ float Accelerator::embree_time(float time) const {
     return std::clamp((time - shutter_open_) * inv_shutter_, 0.0f, 1.0f);
 }
 
-void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTransform& world_from_instance) {
+template <class WorldAt>
+void Accelerator::place_moving(std::uint32_t prototype, const std::vector<TransformComponents>& steps,
+                               WorldAt&& world_at, double t0, double t1) {
     const Prototype& proto = *prototypes_.at(prototype);
-    if (proto.records.empty()) return;
-    std::vector<TransformComponents> steps = motion_steps(world_from_instance, shutter_open_, shutter_close_);
     if (shutter_close_ > shutter_open_) inv_shutter_ = 1 / (shutter_close_ - shutter_open_);
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(geom, proto.scene);
@@ -330,9 +330,7 @@ void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTra
     }
     // The world bounds (for the lights that need them) from the corners along the motion.
     for (int i = 0; i <= 64; ++i) {
-        Transform w = world_from_instance.interpolate(
-            world_from_instance.start_time() +
-            (world_from_instance.end_time() - world_from_instance.start_time()) * i / 64);
+        Transform w = world_at(t0 + (t1 - t0) * i / 64);
         for (float x : {proto.bounds.lo.x, proto.bounds.hi.x})
             for (float y : {proto.bounds.lo.y, proto.bounds.hi.y})
                 for (float z : {proto.bounds.lo.z, proto.bounds.hi.z}) bounds_.extend(w(Point3f{x, y, z}));
@@ -340,12 +338,31 @@ void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTra
     Record r;
     r.kind = Kind::Instance;
     r.prototype = prototype;
-    r.world_from_instance = world_from_instance.start();
+    r.world_from_instance = world_at(t0);
     r.moving = geom;
     Prototype* saved = building_;
     building_ = nullptr;
     attach(geom, std::move(r));
     building_ = saved;
+}
+
+void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTransform& world_from_instance) {
+    if (prototypes_.at(prototype)->records.empty()) return;
+    place_moving(
+        prototype, motion_steps(world_from_instance, shutter_open_, shutter_close_),
+        [&](double t) { return world_from_instance.interpolate(t); }, world_from_instance.start_time(),
+        world_from_instance.end_time());
+}
+
+void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTransform& outer,
+                                      const AnimatedTransform& inner) {
+    if (prototypes_.at(prototype)->records.empty()) return;
+    // Bounded over the moving times (each motion is still outside its own).
+    double t0 = inner.start_time(), t1 = inner.end_time();
+    if (outer.is_animated()) t0 = std::min(t0, outer.start_time()), t1 = std::max(t1, outer.end_time());
+    place_moving(
+        prototype, motion_steps(outer, inner, shutter_open_, shutter_close_),
+        [&](double t) { return outer.interpolate(t) * inner.interpolate(t); }, t0, t1);
 }
 
 // The alpha test at a candidate hit (both closest-hit and shadow rays): evaluate the alpha texture at the

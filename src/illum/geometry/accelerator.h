@@ -69,6 +69,11 @@ public:
     // (motion_steps.h). Call set_shutter() first. A moving shape is a prototype of its own placed so, as
     // pbrt-v4 places it (AnimatedPrimitive: the shape in object space, the ray carried there at its time).
     void add_moving_instance(std::uint32_t prototype, const AnimatedTransform& world_from_instance);
+    // The prototype placed by outer(t) · inner(t): a moving shape of an object definition (its own
+    // prototype, moved by `inner`) in an object instance (`outer`, still or moving). Embree instances one
+    // level deep, so each use of the definition places its moving shapes itself (motion_steps.h).
+    void add_moving_instance(std::uint32_t prototype, const AnimatedTransform& outer,
+                             const AnimatedTransform& inner);
     // The shutter interval [open, close] that ray times fall in (Embree's time 0..1 spans it).
     void set_shutter(float open, float close);
     void commit();
@@ -167,6 +172,11 @@ private:
         return prototypes_[records_[inst_id].prototype]->records[geom_id];
     }
     std::uint32_t attach(RTCGeometry geom, Record record);
+    // An Embree instance of the prototype with these motion steps; world_at(t) bounds it along its motion
+    // over [t0, t1].
+    template <class WorldAt>
+    void place_moving(std::uint32_t prototype, const std::vector<TransformComponents>& steps,
+                      WorldAt&& world_at, double t0, double t1);
     // Makes the Embree geometries of the curves gathered for the world or the prototype being built.
     void flush_curves();
 
