@@ -143,10 +143,9 @@ void expect_steps_are_the_product(const std::vector<TransformComponents>& s, con
 }
 
 TEST(Motion, NestedMotionTakesTwoStepsWhereTheyAreExact) {
-    AnimatedTransform inner(Transform::translate({1, 0, 0}), 0,
-                            Transform::translate({0, 2, 0}) * Transform::rotate(100, {0, 0, 1}) *
-                                Transform::scale(1, 2, 3),
-                            1);
+    AnimatedTransform inner(
+        Transform::translate({1, 0, 0}), 0,
+        Transform::translate({0, 2, 0}) * Transform::rotate(100, {0, 0, 1}) * Transform::scale(1, 2, 3), 1);
     // A still similarity around it: R_w (T R S) = (R_w T)(R_w R) S, interpolated as Embree does.
     AnimatedTransform still(Transform::translate({5, -1, 2}) * Transform::rotate(30, {1, 1, 0}) *
                             Transform::scale(2, 2, 2));

@@ -282,12 +282,13 @@ AttributeEnd
     std::string cases[] = {
         instance(kFrom, kTo, ""),
         instance(kFrom + 1, kTo + 1, "Translate -1 0 3"), // depth is invisible to the orthographic camera
-        instance(kFrom / 2, kTo / 2, fmt::format(R"(ActiveTransform StartTime
+        instance(kFrom / 2, kTo / 2,
+                 fmt::format(R"(ActiveTransform StartTime
   Translate {} 0 0
   ActiveTransform EndTime
   Translate {} 0 0
   ActiveTransform All)",
-                                                  kFrom / 2, kTo / 2)),
+                             kFrom / 2, kTo / 2)),
     };
     for (const std::string& text : cases) {
         auto scene = build_scene(parse_pbrt_string(text, "<test>", "."));

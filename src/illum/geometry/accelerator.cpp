@@ -388,6 +388,20 @@ void Accelerator::alpha_filter(const RTCFilterFunctionNArguments* args) {
     if (!alpha_keeps(cut->alpha->evaluate(sh), *r, h->geomID, tri)) args->valid[0] = 0;
 }
 
+// The same for a curve (pbrt-v4's GeometricPrimitive tests every shape's hit, curves' too): the alpha
+// texture at the hit's (u, v) as Curves::fill_hit gives them, u along the segment and v across its width.
+void Accelerator::curve_alpha_filter(const RTCFilterFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    const auto* cut = static_cast<const AlphaCutout*>(args->geometryUserPtr);
+    const auto* h = reinterpret_cast<const RTCHit*>(args->hit);
+    const auto* r = reinterpret_cast<const RTCRay*>(args->ray);
+    // In a filter function the ray's tfar is the candidate hit's distance.
+    Ray ray{{r->org_x, r->org_y, r->org_z}, {r->dir_x, r->dir_y, r->dir_z}, r->tfar};
+    SurfaceHit sh;
+    cut->curves->fill_hit(h->primID, h->u, r->tfar, ray, &sh);
+    if (!alpha_keeps(cut->alpha->evaluate(sh), *r, h->geomID, h->primID)) args->valid[0] = 0;
+}
+
 std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
                                     std::vector<const Light*> lights, const FloatTexture* alpha,
                                     const MediumInterface* medium_interface) {
@@ -476,18 +490,18 @@ std::uint32_t Accelerator::add_shape(std::unique_ptr<AnalyticShape> shape, const
 }
 
 void Accelerator::add_curves(std::unique_ptr<Curves> curves, const Material* material,
-                             const MediumInterface* medium_interface) {
+                             const MediumInterface* medium_interface, const FloatTexture* alpha) {
     if (curves->segment_count() == 0) return;
     (building_ ? building_->bounds : bounds_).extend(curves->bounds());
     std::vector<PendingCurves>& pending = building_ ? building_->pending_curves : pending_curves_;
     for (PendingCurves& p : pending)
-        if (p.material == material && p.medium_interface == medium_interface &&
+        if (p.material == material && p.medium_interface == medium_interface && p.alpha == alpha &&
             p.curves->type == curves->type && p.curves->flip_normal == curves->flip_normal &&
             p.curves->tessellation == curves->tessellation) {
             p.curves->append(*curves);
             return;
         }
-    pending.push_back({std::move(curves), material, medium_interface});
+    pending.push_back({std::move(curves), material, medium_interface, alpha});
 }
 
 void Accelerator::flush_curves() {
@@ -529,6 +543,12 @@ void Accelerator::flush_curves() {
             }
         }
         Record r;
+        if (p.alpha) {
+            r.cutout = std::make_unique<AlphaCutout>(AlphaCutout{nullptr, p.alpha, p.curves.get()});
+            rtcSetGeometryUserData(geom, r.cutout.get());
+            rtcSetGeometryIntersectFilterFunction(geom, curve_alpha_filter);
+            rtcSetGeometryOccludedFilterFunction(geom, curve_alpha_filter);
+        }
         r.kind = Kind::Curve;
         r.curves = std::move(p.curves);
         r.material = p.material;

@@ -267,7 +267,7 @@ private:
             if (e)
                 diag_.unsupported(s.loc,
                                   "an area light on a curve is ignored (pbrt-v4 cannot sample curves)");
-            scene_->accelerator.add_curves(std::move(g->curves), material, mi);
+            scene_->accelerator.add_curves(std::move(g->curves), material, mi, g->alpha);
             return;
         }
         if (g->mesh) {
