@@ -130,5 +130,80 @@ TEST(Motion, ManyStepsWhenTheMotionStopsInsideTheShutterOrScalesAfterRotating) {
     }
 }
 
+// A moving shape in an object instance: the motion is the instance's transform times the shape's, at each
+// time (pbrt-v4 nests the shape's AnimatedPrimitive in the instance's primitive).
+void expect_steps_are_the_product(const std::vector<TransformComponents>& s, const AnimatedTransform& outer,
+                                  const AnimatedTransform& inner) {
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        double t = s.size() == 1 ? 0 : double(i) / double(s.size() - 1);
+        Matrix4 want = (outer.interpolate(t) * inner.interpolate(t)).matrix();
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 4; ++c) EXPECT_NEAR(s[i].matrix()(r, c), want(r, c), 1e-9) << "step " << i;
+    }
+}
+
+TEST(Motion, NestedMotionTakesTwoStepsWhereTheyAreExact) {
+    AnimatedTransform inner(
+        Transform::translate({1, 0, 0}), 0,
+        Transform::translate({0, 2, 0}) * Transform::rotate(100, {0, 0, 1}) * Transform::scale(1, 2, 3), 1);
+    // A still similarity around it: R_w (T R S) = (R_w T)(R_w R) S, interpolated as Embree does.
+    AnimatedTransform still(Transform::translate({5, -1, 2}) * Transform::rotate(30, {1, 1, 0}) *
+                            Transform::scale(2, 2, 2));
+    std::vector<TransformComponents> s = motion_steps(still, inner, 0, 1);
+    EXPECT_EQ(s.size(), 2u);
+    expect_steps_are_the_product(s, still, inner);
+    // Two translations add.
+    AnimatedTransform slide(Transform::translate({0, 0, -3}), 0, Transform::translate({4, 0, 0}), 1);
+    AnimatedTransform shift(Transform(), 0, Transform::translate({0, 1, 0}), 1);
+    s = motion_steps(slide, shift, 0, 1);
+    EXPECT_EQ(s.size(), 2u);
+    expect_steps_are_the_product(s, slide, shift);
+}
+
+TEST(Motion, NestedMotionTakesManyStepsOtherwise) {
+    AnimatedTransform inner(Transform(), 0, Transform::rotate(90, {0, 0, 1}), 1);
+    // A non-uniform scale around a rotation: the product's rotation does not turn at constant speed.
+    AnimatedTransform squash(Transform::scale(4, 1, 1));
+    std::vector<TransformComponents> s = motion_steps(squash, inner, 0, 1);
+    EXPECT_EQ(int(s.size()), kManyMotionSteps);
+    expect_steps_are_the_product(s, squash, inner);
+    // Two rotations about different axes: their product is no slerp.
+    AnimatedTransform tumble(Transform(), 0, Transform::rotate(90, {1, 0, 0}), 1);
+    s = motion_steps(tumble, inner, 0, 1);
+    EXPECT_EQ(int(s.size()), kManyMotionSteps);
+    expect_steps_are_the_product(s, tumble, inner);
+    // The inner motion stops inside the shutter.
+    AnimatedTransform early(Transform(), 0, Transform::translate({1, 0, 0}), 0.5);
+    s = motion_steps(AnimatedTransform(Transform::rotate(10, {0, 1, 0})), early, 0, 1);
+    EXPECT_EQ(int(s.size()), kManyMotionSteps);
+    expect_steps_are_the_product(s, AnimatedTransform(Transform::rotate(10, {0, 1, 0})), early);
+}
+
+TEST(Motion, MovingShapeInAMovingInstanceIsWhereBothSay) {
+    // A unit sphere sliding along the instance's y, in an instance turned 90° about z (its y is the world's
+    // -x) that itself slides along the world's y.
+    auto acc = std::make_unique<Accelerator>();
+    acc->set_shutter(0, 1);
+    std::uint32_t proto = acc->begin_prototype();
+    acc->add_shape(std::make_unique<SphereShape>(Transform(), 1.0f, -1.0f, 1.0f, 2 * kPi, false), nullptr,
+                   nullptr);
+    acc->end_prototype();
+    AnimatedTransform inner(Transform::translate({0, -3, 0}), 0, Transform::translate({0, 3, 0}), 1);
+    AnimatedTransform outer(Transform::rotate(90, {0, 0, 1}), 0,
+                            Transform::translate({0, 4, 0}) * Transform::rotate(90, {0, 0, 1}), 1);
+    acc->add_moving_instance(proto, outer, inner);
+    acc->commit();
+    for (float t : {0.0f, 0.3f, 0.75f, 1.0f}) {
+        // The centre: the instance's (0, -3 + 6t) turned to (3 - 6t, 0), then moved by (0, 4t).
+        float cx = 3 - 6 * t, cy = 4 * t;
+        SurfaceHit hit;
+        EXPECT_NEAR(drop(*acc, cx, cy, t, &hit), 9, 1e-4) << "time " << t;
+        EXPECT_NEAR(hit.p.x, cx, 1e-4);
+        EXPECT_NEAR(hit.p.y, cy, 1e-4);
+        EXPECT_EQ(drop(*acc, cx + 1.2f, cy, t), kInfinity);
+        EXPECT_EQ(drop(*acc, cx, cy - 1.2f, t), kInfinity);
+    }
+}
+
 } // namespace
 } // namespace illum

@@ -41,6 +41,40 @@ Shape "curve" "point3 P" [-0.8 0.1 0  -0.3 0.1 0  0.3 0.1 0  0.8 0.1 0] )" +
     }
 }
 
+// A curve's "alpha" (float or texture) cuts it as pbrt-v4's alpha test does: 0 removes it; a checkerboard
+// 0 for u < 1/2 (uscale 2) removes the half of the curve before its middle (x < 0 by the control points'
+// symmetry), leaving area 0.8 x 0.2.
+TEST(CurveScene, AlphaCutsTheSilhouette) {
+    const std::string curve = R"(Shape "curve" "point3 P" [-0.8 0.1 0  -0.3 0.1 0  0.3 0.1 0  0.8 0.1 0]
+  "float width" [0.2] )";
+    struct Case {
+        std::string texture, alpha;
+        double area;
+    };
+    const Case cases[] = {
+        {"", R"("float alpha" [0])", 0},
+        {R"(Texture "half" "float" "checkerboard" "float uscale" [2] "float vscale" [1]
+  "float tex1" [0] "float tex2" [1])",
+         R"("texture alpha" "half")", 0.8 * 0.2},
+    };
+    for (const Case& c : cases) {
+        std::string scene = std::string(kView) + R"(
+Integrator "path" "integer maxdepth" [1]
+WorldBegin
+LightSource "infinite" "rgb L" [1 1 1]
+Material "diffuse" "rgb reflectance" [0 0 0]
+)" + c.texture + "\n" + curve +
+                            c.alpha + "\n";
+        auto scene_built = build(scene);
+        EXPECT_TRUE(scene_built->warnings.empty()) << scene_built->warnings.front();
+        test::RenderSetup s;
+        s.spp = 16;
+        auto r = test::render_pbrt(scene, s);
+        test::MeanEstimate m = test::pixel_mean(r.image, 1);
+        EXPECT_NEAR(m.mean, 1 - c.area / 4, 4.5 * m.standard_error + 1e-4) << c.alpha;
+    }
+}
+
 // Lossless fibres (σ_a = 0) scatter all the light they receive: under a uniform sky of radiance 1, at
 // unbounded depth, a tuft of them is invisible, every pixel 1. Roughnesses and orientations vary across
 // the tuft, so the furnace checks the curve frame, h and the BSDF together.

@@ -307,10 +307,10 @@ float Accelerator::embree_time(float time) const {
     return std::clamp((time - shutter_open_) * inv_shutter_, 0.0f, 1.0f);
 }
 
-void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTransform& world_from_instance) {
+template <class WorldAt>
+void Accelerator::place_moving(std::uint32_t prototype, const std::vector<TransformComponents>& steps,
+                               WorldAt&& world_at, double t0, double t1) {
     const Prototype& proto = *prototypes_.at(prototype);
-    if (proto.records.empty()) return;
-    std::vector<TransformComponents> steps = motion_steps(world_from_instance, shutter_open_, shutter_close_);
     if (shutter_close_ > shutter_open_) inv_shutter_ = 1 / (shutter_close_ - shutter_open_);
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(geom, proto.scene);
@@ -330,9 +330,7 @@ void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTra
     }
     // The world bounds (for the lights that need them) from the corners along the motion.
     for (int i = 0; i <= 64; ++i) {
-        Transform w = world_from_instance.interpolate(
-            world_from_instance.start_time() +
-            (world_from_instance.end_time() - world_from_instance.start_time()) * i / 64);
+        Transform w = world_at(t0 + (t1 - t0) * i / 64);
         for (float x : {proto.bounds.lo.x, proto.bounds.hi.x})
             for (float y : {proto.bounds.lo.y, proto.bounds.hi.y})
                 for (float z : {proto.bounds.lo.z, proto.bounds.hi.z}) bounds_.extend(w(Point3f{x, y, z}));
@@ -340,12 +338,31 @@ void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTra
     Record r;
     r.kind = Kind::Instance;
     r.prototype = prototype;
-    r.world_from_instance = world_from_instance.start();
+    r.world_from_instance = world_at(t0);
     r.moving = geom;
     Prototype* saved = building_;
     building_ = nullptr;
     attach(geom, std::move(r));
     building_ = saved;
+}
+
+void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTransform& world_from_instance) {
+    if (prototypes_.at(prototype)->records.empty()) return;
+    place_moving(
+        prototype, motion_steps(world_from_instance, shutter_open_, shutter_close_),
+        [&](double t) { return world_from_instance.interpolate(t); }, world_from_instance.start_time(),
+        world_from_instance.end_time());
+}
+
+void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTransform& outer,
+                                      const AnimatedTransform& inner) {
+    if (prototypes_.at(prototype)->records.empty()) return;
+    // Bounded over the moving times (each motion is still outside its own).
+    double t0 = inner.start_time(), t1 = inner.end_time();
+    if (outer.is_animated()) t0 = std::min(t0, outer.start_time()), t1 = std::max(t1, outer.end_time());
+    place_moving(
+        prototype, motion_steps(outer, inner, shutter_open_, shutter_close_),
+        [&](double t) { return outer.interpolate(t) * inner.interpolate(t); }, t0, t1);
 }
 
 // The alpha test at a candidate hit (both closest-hit and shadow rays): evaluate the alpha texture at the
@@ -369,6 +386,20 @@ void Accelerator::alpha_filter(const RTCFilterFunctionNArguments* args) {
         sh.uv = {b1 + b2, b2}; // the default (0,0), (1,0), (1,1) parameterisation
     }
     if (!alpha_keeps(cut->alpha->evaluate(sh), *r, h->geomID, tri)) args->valid[0] = 0;
+}
+
+// The same for a curve (pbrt-v4's GeometricPrimitive tests every shape's hit, curves' too): the alpha
+// texture at the hit's (u, v) as Curves::fill_hit gives them, u along the segment and v across its width.
+void Accelerator::curve_alpha_filter(const RTCFilterFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    const auto* cut = static_cast<const AlphaCutout*>(args->geometryUserPtr);
+    const auto* h = reinterpret_cast<const RTCHit*>(args->hit);
+    const auto* r = reinterpret_cast<const RTCRay*>(args->ray);
+    // In a filter function the ray's tfar is the candidate hit's distance.
+    Ray ray{{r->org_x, r->org_y, r->org_z}, {r->dir_x, r->dir_y, r->dir_z}, r->tfar};
+    SurfaceHit sh;
+    cut->curves->fill_hit(h->primID, h->u, r->tfar, ray, &sh);
+    if (!alpha_keeps(cut->alpha->evaluate(sh), *r, h->geomID, h->primID)) args->valid[0] = 0;
 }
 
 std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
@@ -459,18 +490,18 @@ std::uint32_t Accelerator::add_shape(std::unique_ptr<AnalyticShape> shape, const
 }
 
 void Accelerator::add_curves(std::unique_ptr<Curves> curves, const Material* material,
-                             const MediumInterface* medium_interface) {
+                             const MediumInterface* medium_interface, const FloatTexture* alpha) {
     if (curves->segment_count() == 0) return;
     (building_ ? building_->bounds : bounds_).extend(curves->bounds());
     std::vector<PendingCurves>& pending = building_ ? building_->pending_curves : pending_curves_;
     for (PendingCurves& p : pending)
-        if (p.material == material && p.medium_interface == medium_interface &&
+        if (p.material == material && p.medium_interface == medium_interface && p.alpha == alpha &&
             p.curves->type == curves->type && p.curves->flip_normal == curves->flip_normal &&
             p.curves->tessellation == curves->tessellation) {
             p.curves->append(*curves);
             return;
         }
-    pending.push_back({std::move(curves), material, medium_interface});
+    pending.push_back({std::move(curves), material, medium_interface, alpha});
 }
 
 void Accelerator::flush_curves() {
@@ -512,6 +543,12 @@ void Accelerator::flush_curves() {
             }
         }
         Record r;
+        if (p.alpha) {
+            r.cutout = std::make_unique<AlphaCutout>(AlphaCutout{nullptr, p.alpha, p.curves.get()});
+            rtcSetGeometryUserData(geom, r.cutout.get());
+            rtcSetGeometryIntersectFilterFunction(geom, curve_alpha_filter);
+            rtcSetGeometryOccludedFilterFunction(geom, curve_alpha_filter);
+        }
         r.kind = Kind::Curve;
         r.curves = std::move(p.curves);
         r.material = p.material;

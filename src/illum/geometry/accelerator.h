@@ -54,11 +54,11 @@ public:
                             const Light* light, bool native_sphere = false,
                             const MediumInterface* medium_interface = nullptr);
     // Curves (pbrt-v4's "curve") as Embree's native Bézier curves: flat and cylinder as ray-facing ribbons,
-    // ribbons oriented by their normals (curves.h). All curves of one material, medium interface,
+    // ribbons oriented by their normals (curves.h). All curves of one material, medium interface, alpha,
     // type, orientation and tessellation rate are gathered into one Embree geometry, made at commit() or
-    // end_prototype().
+    // end_prototype(). alpha as for add_mesh, evaluated at the hit's (u, v) (curves.h).
     void add_curves(std::unique_ptr<Curves> curves, const Material* material,
-                    const MediumInterface* medium_interface = nullptr);
+                    const MediumInterface* medium_interface = nullptr, const FloatTexture* alpha = nullptr);
     // Object instancing (pbrt's ObjectBegin/ObjectInstance): between begin_prototype() and end_prototype()
     // the add_* calls build a prototype (an Embree scene of its own, in instance space); add_instance()
     // places it in the world any number of times at the cost of one Embree instance each.
@@ -69,6 +69,11 @@ public:
     // (motion_steps.h). Call set_shutter() first. A moving shape is a prototype of its own placed so, as
     // pbrt-v4 places it (AnimatedPrimitive: the shape in object space, the ray carried there at its time).
     void add_moving_instance(std::uint32_t prototype, const AnimatedTransform& world_from_instance);
+    // The prototype placed by outer(t) · inner(t): a moving shape of an object definition (its own
+    // prototype, moved by `inner`) in an object instance (`outer`, still or moving). Embree instances one
+    // level deep, so each use of the definition places its moving shapes itself (motion_steps.h).
+    void add_moving_instance(std::uint32_t prototype, const AnimatedTransform& outer,
+                             const AnimatedTransform& inner);
     // The shutter interval [open, close] that ray times fall in (Embree's time 0..1 spans it).
     void set_shutter(float open, float close);
     void commit();
@@ -125,6 +130,7 @@ private:
     struct AlphaCutout {
         const TriangleMesh* mesh;
         const FloatTexture* alpha;
+        const Curves* curves = nullptr; // for curve_alpha_filter, instead of mesh
     };
     struct Record {
         Kind kind = Kind::Mesh;
@@ -147,6 +153,7 @@ private:
         std::unique_ptr<Curves> curves;
         const Material* material = nullptr;
         const MediumInterface* medium_interface = nullptr;
+        const FloatTexture* alpha = nullptr;
     };
     struct Prototype {
         RTCScene scene = nullptr;
@@ -159,6 +166,7 @@ private:
     // Embree's ray time: the ray's time as a fraction of the shutter interval.
     float embree_time(float time) const;
     static void alpha_filter(const RTCFilterFunctionNArguments* args);
+    static void curve_alpha_filter(const RTCFilterFunctionNArguments* args);
     // The context filter of shadow_crossings(): gathers passable surfaces, accepts blockers.
     static void shadow_filter(const RTCFilterFunctionNArguments* args);
     // The record of a hit's geometry (in the instance's prototype for a hit inside an instance).
@@ -167,6 +175,11 @@ private:
         return prototypes_[records_[inst_id].prototype]->records[geom_id];
     }
     std::uint32_t attach(RTCGeometry geom, Record record);
+    // An Embree instance of the prototype with these motion steps; world_at(t) bounds it along its motion
+    // over [t0, t1].
+    template <class WorldAt>
+    void place_moving(std::uint32_t prototype, const std::vector<TransformComponents>& steps,
+                      WorldAt&& world_at, double t0, double t1);
     // Makes the Embree geometries of the curves gathered for the world or the prototype being built.
     void flush_curves();
 

@@ -212,7 +212,11 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
     // A constant alpha of 0 removes the shape (pbrt-v4 does the same); any other alpha below 1 is a
     // cut-out.
     if (const Param* a = s.params.find("alpha"))
-        if (a->type == ParamType::Float && s.params.get_float("alpha", 1) <= 0) return std::nullopt;
+        if (a->type == ParamType::Float && s.params.get_float("alpha", 1) <= 0) {
+            // Its other parameters go unread, but not unused: the report of unused ones passes them.
+            for (const Param& p : s.params.params()) p.used = true;
+            return std::nullopt;
+        }
     ShapeGeometry g;
     g.alpha = alpha_of(s, textures);
     if (s.type == "trianglemesh") {
@@ -229,10 +233,6 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
         g.analytic = cylinder(s);
     } else if (s.type == "curve") {
         g.curves = create_curves(s, textures.diagnostics());
-        if (g.alpha) {
-            textures.diagnostics().unsupported(param_loc(s, "alpha"), "curve \"alpha\" is ignored");
-            g.alpha = nullptr;
-        }
         return g;
     } else if (s.type == "loopsubdiv") {
         g.mesh = loop_subdivision_mesh(s);

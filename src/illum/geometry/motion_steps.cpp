@@ -1,5 +1,6 @@
 #include "illum/geometry/motion_steps.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace illum {
@@ -50,23 +51,65 @@ TransformComponents triangular(TransformComponents c) {
     return c;
 }
 
+// The steps at n evenly spaced times of [open, close], each in Embree's form, rotations on consecutive
+// shorter arcs.
+template <class At>
+std::vector<TransformComponents> steps_at(At&& at, int n, double open, double close) {
+    std::vector<TransformComponents> steps;
+    steps.reserve(std::size_t(n));
+    for (int i = 0; i < n; ++i) {
+        double t = i == 0 ? open : i == n - 1 ? close : open + (close - open) * i / (n - 1);
+        TransformComponents c = at(t);
+        if (!is_diagonal(c.scale)) c = triangular(c);
+        if (!steps.empty() && dot(steps.back().rotation, c.rotation) < 0) c.rotation = -c.rotation;
+        steps.push_back(c);
+    }
+    return steps;
+}
+
+// What Embree makes of two steps at the fraction s between them: T and U linearly, R by slerp.
+Matrix4 embree_interpolation(const TransformComponents& a, const TransformComponents& b, double s) {
+    TransformComponents c;
+    for (std::size_t i = 0; i < 3; ++i) c.translation[i] = (1 - s) * a.translation[i] + s * b.translation[i];
+    for (std::size_t i = 0; i < 9; ++i) c.scale[i] = (1 - s) * a.scale[i] + s * b.scale[i];
+    c.rotation = slerp(a.rotation, b.rotation, s);
+    return c.matrix();
+}
+
+bool spans_shutter(const AnimatedTransform& m, double open, double close) {
+    return !m.is_animated() || (m.start_time() <= open && m.end_time() >= close);
+}
+
 } // namespace
+
+std::vector<TransformComponents> motion_steps(const AnimatedTransform& outer, const AnimatedTransform& inner,
+                                              double open, double close) {
+    auto product = [&](double t) { return (outer.interpolate(t) * inner.interpolate(t)).matrix(); };
+    if (!(close > open)) return {decompose(product(open))};
+    auto at = [&](double t) { return decompose(product(t)); };
+    if (spans_shutter(outer, open, close) && spans_shutter(inner, open, close)) {
+        std::vector<TransformComponents> two = steps_at(at, 2, open, close);
+        bool exact = true;
+        for (int k = 1; k < 8 && exact; ++k) {
+            double s = k / 8.0;
+            Matrix4 want = product(open + (close - open) * s), got = embree_interpolation(two[0], two[1], s);
+            double size = 1;
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 4; ++c) size = std::max(size, std::abs(want(r, c)));
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 4; ++c) exact = exact && std::abs(want(r, c) - got(r, c)) <= 1e-9 * size;
+        }
+        if (exact) return two;
+    }
+    return steps_at(at, kManyMotionSteps, open, close);
+}
 
 std::vector<TransformComponents> motion_steps(const AnimatedTransform& motion, double open, double close) {
     if (!(close > open)) return {decompose(motion.interpolate(open).matrix())};
     bool spans = motion.start_time() <= open && motion.end_time() >= close;
     TransformComponents a = motion.components(open), b = motion.components(close);
     int n = spans && is_diagonal(a.scale) && is_diagonal(b.scale) ? 2 : kManyMotionSteps;
-    std::vector<TransformComponents> steps;
-    steps.reserve(std::size_t(n));
-    for (int i = 0; i < n; ++i) {
-        double t = i == 0 ? open : i == n - 1 ? close : open + (close - open) * i / (n - 1);
-        TransformComponents c = motion.components(t);
-        if (!is_diagonal(c.scale)) c = triangular(c);
-        if (!steps.empty() && dot(steps.back().rotation, c.rotation) < 0) c.rotation = -c.rotation;
-        steps.push_back(c);
-    }
-    return steps;
+    return steps_at([&](double t) { return motion.components(t); }, n, open, close);
 }
 
 } // namespace illum

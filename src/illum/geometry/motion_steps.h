@@ -26,4 +26,13 @@ inline constexpr int kManyMotionSteps = 65;
 // one step, the transform at `open`.
 std::vector<TransformComponents> motion_steps(const AnimatedTransform& motion, double open, double close);
 
+// The nested motion outer(t) · inner(t): a moving shape inside an object definition placed by an object
+// instance, still or moving (pbrt-v4 nests an AnimatedPrimitive in the instance's TransformedPrimitive or
+// AnimatedPrimitive, carrying the ray through both at its time). Each step is the product at its time,
+// decomposed. Two steps when Embree's interpolation between the shutter's ends reproduces the product
+// (checked at interior times: so for an outer similarity, still, around a motion as above); else
+// kManyMotionSteps.
+std::vector<TransformComponents> motion_steps(const AnimatedTransform& outer, const AnimatedTransform& inner,
+                                              double open, double close);
+
 } // namespace illum

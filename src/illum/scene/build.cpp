@@ -217,8 +217,7 @@ private:
 
     // A moving shape (pbrt-v4's animated shape): built in object space as a prototype of its own and
     // placed by its moving transform, as pbrt-v4's AnimatedPrimitive does. Emitters stay at their start
-    // transform (pbrt-v4 rejects moving area lights), and so do moving shapes inside object definitions
-    // (Embree here instances one level deep).
+    // transform (pbrt-v4 rejects moving area lights).
     bool add_moving_shape(const ShapeDesc& s) {
         if (s.area_light >= 0) {
             diag_.unsupported(s.loc,
@@ -226,11 +225,17 @@ private:
                               "from its start transform, still");
             return false;
         }
-        if (building_prototype_) {
-            diag_.unsupported(s.loc,
-                              "a moving shape inside an object definition stays at its start transform");
-            return false;
-        }
+        scene_->accelerator.add_moving_instance(moving_prototype(s), motion_of(s));
+        scene_->has_motion = true;
+        return true;
+    }
+
+    static AnimatedTransform motion_of(const ShapeDesc& s) {
+        return AnimatedTransform(s.world_from_object, s.motion.start_time, s.motion.end, s.motion.end_time);
+    }
+
+    // The prototype of a moving shape: the shape in its object space.
+    std::uint32_t moving_prototype(const ShapeDesc& s) {
         ShapeDesc still = s;
         still.world_from_object = Transform();
         still.motion = {};
@@ -244,10 +249,7 @@ private:
         const auto& own = s.params.params();
         for (std::size_t i = 0; i < read.size() && i < own.size(); ++i)
             own[i].used = own[i].used || read[i].used;
-        scene_->accelerator.add_moving_instance(
-            id, AnimatedTransform(s.world_from_object, s.motion.start_time, s.motion.end, s.motion.end_time));
-        scene_->has_motion = true;
-        return true;
+        return id;
     }
 
     // A shape's geometry into the accelerator with its material; an emitting shape gets one light per
@@ -265,7 +267,7 @@ private:
             if (e)
                 diag_.unsupported(s.loc,
                                   "an area light on a curve is ignored (pbrt-v4 cannot sample curves)");
-            scene_->accelerator.add_curves(std::move(g->curves), material, mi);
+            scene_->accelerator.add_curves(std::move(g->curves), material, mi, g->alpha);
             return;
         }
         if (g->mesh) {
@@ -324,9 +326,15 @@ private:
 
     // pbrt's ObjectBegin/ObjectInstance: each definition is built once, in its own space, as an Embree
     // prototype; each use is an Embree instance of it (memory does not grow with the number of uses).
-    // Area lights in instances are ignored, as pbrt-v4 does.
+    // Area lights in instances are ignored, as pbrt-v4 does. A moving shape of a definition (pbrt-v4's
+    // animated shape of the instance) is a prototype of its own that each use places by the use's
+    // transform times the shape's moving one, at the ray's time (Embree instances one level deep).
     void add_instances() {
-        std::unordered_map<std::string, std::uint32_t> prototypes;
+        struct Definition {
+            std::uint32_t still;
+            std::vector<std::pair<std::uint32_t, AnimatedTransform>> moving;
+        };
+        std::unordered_map<std::string, Definition> prototypes;
         for (const InstanceUse& use : desc_.instance_uses) {
             auto it = desc_.instances.find(use.name);
             if (it == desc_.instances.end())
@@ -335,8 +343,9 @@ private:
                 throw Error(use.loc, "instance transform is not finite");
             auto p = prototypes.find(use.name);
             if (p == prototypes.end()) {
-                std::uint32_t id = scene_->accelerator.begin_prototype();
-                building_prototype_ = true;
+                Definition d;
+                std::vector<ShapeDesc> moving;
+                d.still = scene_->accelerator.begin_prototype();
                 for (const ShapeDesc& shape : it->second.shapes) {
                     ShapeDesc copy = shape;
                     if (copy.area_light >= 0) {
@@ -344,19 +353,29 @@ private:
                                           "area lights in object instances are ignored (as in pbrt-v4)");
                         copy.area_light = -1;
                     }
-                    add_shape(copy);
+                    if (copy.motion.animated)
+                        moving.push_back(std::move(copy));
+                    else
+                        add_shape(copy);
                 }
                 scene_->accelerator.end_prototype();
-                building_prototype_ = false;
-                p = prototypes.emplace(use.name, id).first;
+                for (const ShapeDesc& shape : moving)
+                    d.moving.emplace_back(moving_prototype(shape), motion_of(shape));
+                p = prototypes.emplace(use.name, std::move(d)).first;
             }
+            const Definition& d = p->second;
+            AnimatedTransform outer(use.world_from_instance);
             if (use.motion.animated) {
-                scene_->accelerator.add_moving_instance(
-                    p->second, AnimatedTransform(use.world_from_instance, use.motion.start_time,
-                                                 use.motion.end, use.motion.end_time));
+                outer = AnimatedTransform(use.world_from_instance, use.motion.start_time, use.motion.end,
+                                          use.motion.end_time);
+                scene_->accelerator.add_moving_instance(d.still, outer);
                 scene_->has_motion = true;
             } else {
-                scene_->accelerator.add_instance(p->second, use.world_from_instance);
+                scene_->accelerator.add_instance(d.still, use.world_from_instance);
+            }
+            for (const auto& [id, inner] : d.moving) {
+                scene_->accelerator.add_moving_instance(id, outer, inner);
+                scene_->has_motion = true;
             }
         }
     }
@@ -368,7 +387,6 @@ private:
     std::vector<const Material*> materials_;
     std::unordered_map<std::string, const Material*> named_;
     const Material* default_material_ = nullptr;
-    bool building_prototype_ = false; // adding the shapes of an object definition
     struct NamedMedium {
         const Medium* medium;
         std::size_t report; // index into scene_->medium_reports
