@@ -4,8 +4,9 @@ RGB texels, written as Ptex's own writer would (header, extended header with cla
 info and constant data, the level info (not zipped), level 0 and the reduction levels, each face's data as zipped channel
 planes). Faces 0-15 (the floor's 4 x 4 bilinear patches) are 16 x 16 texels: stripes, gradients and checks
 of different frequencies and colours, so the footprint's filtering and the reductions show; faces 16 and 17
-(the back wall's two triangle pairs) are 32 x 8 and 8 x 32. No face has an adjacent face (so Ptex filters
-each face on its own, as illum does). Standard library only."""
+(the back wall's two triangle pairs) are 32 x 8 and 8 x 32. The adjacency is the meshes': the floor's faces
+(u along +x, v along +z, face 4 j + i at column i, row j) meet their grid neighbours, the wall's two faces
+meet each other, so the filter reaches across edges and corners. Standard library only."""
 import struct
 import zlib
 
@@ -54,7 +55,18 @@ def block(t):
 def main():
     n = len(FACES)
     full = [texels(f) for f in range(n)]
-    info = b"".join(struct.pack("<bbBB4i", ul, vl, 0, 0, -1, -1, -1, -1) for ul, vl in FACES)
+    # Adjacent faces across the bottom, right, top and left edges, and the edge of the neighbour (the
+    # opposite one, as every face has the same orientation).
+    adjacent = []
+    for f in range(n):
+        if f < 16:
+            i, j = f % 4, f // 4
+            near = [f - 4 if j > 0 else -1, f + 1 if i < 3 else -1, f + 4 if j < 3 else -1, f - 1 if i > 0 else -1]
+        else:
+            near = [-1, 17 if f == 16 else -1, -1, 16 if f == 17 else -1]
+        adjacent.append(near)
+    edges = sum(((e + 2) % 4) << (2 * e) for e in range(4))
+    info = b"".join(struct.pack("<bbBB4i", ul, vl, edges, 0, *adjacent[f]) for f, (ul, vl) in enumerate(FACES))
     # The face's mean, rounded down, as its constant data.
     const = b""
     for t in full:

@@ -83,6 +83,14 @@ TEST(PtexScene, EachFaceShowsItsColour) {
         });
 }
 
+// scenes/ptex (compared with pbrt-v4 in docs/verification.md) builds without warnings and filters.
+TEST(PtexScene, TheComparisonSceneBuildsWithoutWarnings) {
+    const std::string dir = std::string(ILLUM_SOURCE_DIR) + "/scenes/ptex";
+    auto scene = build_scene(parse_pbrt_file(dir + "/ptex.pbrt"));
+    EXPECT_TRUE(scene->warnings.empty()) << scene->warnings.front();
+    EXPECT_TRUE(scene->texture_filtering);
+}
+
 TEST(PtexScene, AlphaCutsFaceByFace) {
     // Faces 0, 3 and 5 opaque (alpha 1), the others holes, over an emitter of radiance 1.
     std::vector<test::TestFace> faces;

@@ -1,8 +1,10 @@
 // Ptex files (texture/ptex_file.h) written by tests/ptex_writer.h and read back: texels of every encoding
 // (constant, zipped, difference-zipped, tiled) and data type, the file's stored reductions and the ones made
 // as Ptex makes them; Ptex's B-spline filter (texture/ptex_filter.h) against its closed form at and between
-// texel centres, over wider footprints and at the borders; the "ptex" texture's encoding and scale
-// (texture/ptex_texture.h); broken files are errors naming the file.
+// texel centres, over wider footprints, at the borders, and across edges and corners into adjacent faces; the
+// "ptex" texture's encoding and scale (texture/ptex_texture.h); broken files are errors naming the file. (A
+// throwaway program linking pbrt-v4's libPtex compared ptex_filter with Ptex's own f_bspline filter:
+// docs/verification.md, "Ptex textures".)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -191,6 +193,55 @@ TEST(PtexFilter, BorderModes) {
     ptex_filter(c, 0, 1.7f, 0.5f, 0, 0, 0, 0, &a);
     ptex_filter(c, 0, 1.0f, 0.5f, 0, 0, 0, 0, &b);
     EXPECT_EQ(a, b);
+}
+
+// Across edges and corners (Ptex's splitAndApply): 4 x 4 faces of one value each around a corner (a, b, c, d
+// in the order lower left, lower right, upper left, upper right); at the corner texel of the first face the
+// B-spline's (1/6, 2/3, 1/6) along each axis gives the faces 25/36, 5/36, 5/36 and 1/36 of the weight.
+TEST(PtexFilter, KernelsReachAcrossEdgesAndCorners) {
+    auto uniform = [](double value) {
+        TestFace f{2, 2, 1, std::vector<double>(16, value)};
+        return f;
+    };
+    std::vector<TestFace> grid = {uniform(0.1), uniform(0.3), uniform(0.7), uniform(0.9)};
+    auto link = [&](int f, int e, int g, int ge) {
+        grid[std::size_t(f)].adjacent[e] = g;
+        grid[std::size_t(f)].edges[e] = ge;
+        grid[std::size_t(g)].adjacent[ge] = f;
+        grid[std::size_t(g)].edges[ge] = e;
+    };
+    link(0, 1, 1, 3); // right of 0 is left of 1
+    link(0, 2, 2, 0); // top of 0 is bottom of 2
+    link(1, 2, 3, 0);
+    link(2, 1, 3, 3);
+    float out = 0;
+    const float corner = 3.5f / 4;
+    PtexFile four = PtexFile::read(write_ptex("grid.ptx", grid, 1, 3));
+    ptex_filter(four, 0, corner, corner, 0, 0, 0, 0, &out);
+    EXPECT_NEAR(out, (25 * 0.1 + 5 * 0.3 + 5 * 0.7 + 0.9) / 36, 1e-6);
+    // Across the right edge only (v at a texel centre away from the top).
+    ptex_filter(four, 0, corner, 1.5f / 4, 0, 0, 0, 0, &out);
+    EXPECT_NEAR(out, (5 * 0.1 + 0.3) / 6, 1e-6);
+    // Without the corner face (a boundary vertex), its weight is left out of the normalisation.
+    grid[1].adjacent[2] = grid[2].adjacent[1] = -1;
+    grid.pop_back();
+    PtexFile three = PtexFile::read(write_ptex("three.ptx", grid, 1, 3));
+    ptex_filter(three, 0, corner, corner, 0, 0, 0, 0, &out);
+    EXPECT_NEAR(out, (25 * 0.1 + 5 * 0.3 + 5 * 0.7) / 35, 1e-6);
+    // A neighbour turned a quarter: face 1's bottom edge on face 0's right edge, which runs the other way,
+    // so face 0's texel row j meets face 1's column 3 - j of its bottom row.
+    TestFace turned{2, 2, 1, {}};
+    for (int v = 0; v < 4; ++v)
+        for (int u = 0; u < 4; ++u) turned.texels.push_back(0.01 * (10 * u + v));
+    std::vector<TestFace> pair = {uniform(0.1), turned};
+    pair[0].adjacent[1] = 1;
+    pair[0].edges[1] = 0;
+    pair[1].adjacent[0] = 0;
+    pair[1].edges[0] = 1;
+    PtexFile rotated = PtexFile::read(write_ptex("turned.ptx", pair, 1, 3));
+    ptex_filter(rotated, 0, corner, 1.5f / 4, 0, 0, 0, 0, &out);
+    auto t = [&](int u) { return 0.01 * (10 * u); };
+    EXPECT_NEAR(out, 5 * 0.1 / 6 + (t(3) / 6 + 2 * t(2) / 3 + t(1) / 6) / 6, 1e-6);
 }
 
 TEST(PtexTexture, EncodingQuantisesToEightBitsAndScaleMultiplies) {

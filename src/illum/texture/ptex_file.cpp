@@ -109,6 +109,7 @@ PtexFile PtexFile::read(const std::string& path) {
         auto border = [&](std::uint16_t m) { return m <= 2 ? PtexBorder(m) : PtexBorder::Clamp; };
         f.u_border = border(r.get<std::uint16_t>(kHeaderSize));
         if (ext_size >= 6) f.v_border = border(r.get<std::uint16_t>(kHeaderSize + 4));
+        if (ext_size >= 8) f.tangent_vectors = r.get<std::uint16_t>(kHeaderSize + 6) == 1;
     }
 
     std::uint64_t pos = kHeaderSize + ext_size;

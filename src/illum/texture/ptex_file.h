@@ -4,15 +4,15 @@
 //   header (64 bytes: magic "Ptex", version 1, mesh type, data type uint8/uint16/half/float, alpha channel,
 //     channels, levels, faces, the sizes of the extended header, face-info, constant-data and level-info
 //     blocks, minor version, level-data size, meta-data sizes), the extended header (its size from the
-//     header; its first fields are the u and v border modes), then zlib streams of the face info (per face:
-//     log2 resolutions u, v, adjacent edges (2 bits each), flags (constant 1, has edits 2, neighbourhood
-//     constant 4, subface 8), four adjacent faces: 20 bytes), constant data (each face's mean texel);
-//     then, not zipped, the level info (per level: data size, header size, faces: 16 bytes); then each
-//     level: its zipped header
-//     (a 32-bit word per face: block size in bits 0-29, encoding in 30-31) and the faces' blocks in order.
-//     A block is one texel (constant), the face's texels zipped channel by channel (each channel's plane of
-//     rows), the same with integer values stored as differences from the previous one (diffzipped), or
-//     tiles (tile resolution, zipped tile headers, tiles as blocks of their own).
+//     header; its first fields are the u and v border modes and the edge filter mode), then zlib streams of
+//     the face info (per face: log2 resolutions u, v, adjacent edges (2 bits each), flags (constant 1, has
+//     edits 2, neighbourhood constant 4, subface 8), four adjacent faces: 20 bytes), constant data (each
+//     face's mean texel); then, not zipped, the level info (per level: data size, header size, faces: 16
+//     bytes); then each level: its zipped header (a 32-bit word per face: block size in bits 0-29, encoding
+//     in 30-31) and the faces' blocks in order. A block is one texel (constant), the face's texels zipped
+//     channel by channel (each channel's plane of rows), the same with integer values stored as differences
+//     from the previous one (diffzipped), or tiles (tile resolution, zipped tile headers, tiles as blocks of
+//     their own).
 // Level 0 holds every face at full resolution; level i > 0 the faces whose smaller side is at least 2^i
 // (in the order of decreasing smaller side, stable; a constant face counts as 2), each reduced by 2^i
 // along both sides. Meta data and edits are not read.
@@ -64,6 +64,9 @@ struct PtexFile {
     bool triangles = false; // mesh type: triangles (pbrt-v4's meshes are quads for Ptex)
     float one_value = 1;    // the stored value of 1: 255 (uint8), 65535 (uint16), 1 (half, float)
     PtexBorder u_border = PtexBorder::Clamp, v_border = PtexBorder::Clamp;
+    // The extended header's edge filter mode "tanvec": the first two channels are a tangent-space vector,
+    // turned with the face when a filter reads across an edge.
+    bool tangent_vectors = false;
     std::vector<PtexFace> faces;
 
     // Throws illum::Error naming the file and what is wrong (not Ptex, truncated, bad zlib stream).

@@ -13,12 +13,18 @@
 //   kernel h(x) = 2|x|³ - 3x² + 1 (|x| < 1) at spacing 1/(1.5 width + 0.5), over the four texels from
 //   2 floor(u - 1/2); from 1 the face's mean blended with its neighbour's by h(u - 1/2 - floor(u - 1/2)).
 // - u and v are clamped to [0, 1] (border mode clamp), wrapped (periodic) or, beyond one face width,
-//   black. Taps beyond the face's edge: Ptex gives them to the adjacent face across that edge (and the
-//   faces around a corner); here they are given to the edge texels (clamp and periodic) or dropped
-//   (black), which is what Ptex does at an edge without an adjacent face. The result is divided by the
-//   kernel's whole weight, as Ptex does.
-// - A face flagged "neighbourhood constant" is its constant value. A subface (of a non-quad face) builds
-//   its kernel at twice its resolution, as Ptex does, and halves it.
+//   black. Taps beyond the face's edge go to the adjacent face across that edge (turned into its frame, at
+//   its resolution when that is coarser: pairs of taps summed), and taps beyond a corner to the faces
+//   around that corner: the diagonal face at a vertex of valence 4; at valence 5 and more the corner part of
+//   the kernel made symmetric (its u and v weights summed) and given to each face around the vertex, its
+//   weight rescaled; at valence 2 or 3 none, its weight left out of the normalisation. Main faces and
+//   subfaces (of non-quad faces) meet with the kernel moved between their resolutions. Where a face has no
+//   adjacent face, the taps go to the edge texels (clamp, periodic) or are dropped (black). The result is
+//   divided by the kernel's whole weight. With the edge filter mode "tanvec" the first two channels are
+//   turned back from each neighbour's frame (not a constant face's value, as in Ptex).
+// - A face flagged "neighbourhood constant" is its constant value. A subface builds its kernel at twice its
+//   resolution, as Ptex does, and halves it.
+// Checked against Ptex's own filter to float rounding (docs/verification.md, "Ptex textures").
 #pragma once
 
 #include "illum/texture/ptex_file.h"
