@@ -301,6 +301,9 @@ public:
     float weight = 0;
 
     void split_and_apply(Kernel& k, int id) {
+        // Subfaces send kernels on through split_and_apply again; a consistent file needs a few steps,
+        // a broken one could loop.
+        if (++depth_ > kMaxDepth) return;
         const PtexFace& f = file_.faces[std::size_t(id)];
         const bool right = k.u.start + k.u.n > k.u.res(), left = k.u.start < 0;
         const bool top = k.v.start + k.v.n > k.v.res(), bottom = k.v.start < 0;
@@ -506,8 +509,10 @@ private:
         for (int c = 0; c < nch_; ++c) acc[c] += sum[c];
     }
 
+    static constexpr int kMaxDepth = 64;
     const PtexFile& file_;
     int nch_;
+    int depth_ = 0;
 };
 
 } // namespace
