@@ -145,6 +145,7 @@ std::optional<PatchCrossing> patch_crossing(const PatchUserData& g, std::uint32_
         h.p = lerp(x->u, lerp(x->v, c[0], c[2]), lerp(x->v, c[1], c[3]));
         h.n = h.ns = g.mesh->geometric_normal(prim, x->u, x->v);
         h.uv = g.mesh->texture_uv(prim, x->u, x->v);
+        h.face_index = g.mesh->face_index(prim);
         if (!alpha_keeps(g.alpha->evaluate(h), r, geom_id, prim)) return std::nullopt;
     }
     return x;
@@ -385,6 +386,7 @@ void Accelerator::alpha_filter(const RTCFilterFunctionNArguments* args) {
     } else {
         sh.uv = {b1 + b2, b2}; // the default (0,0), (1,0), (1,1) parameterisation
     }
+    sh.face_index = m.face_index(tri);
     if (!alpha_keeps(cut->alpha->evaluate(sh), *r, h->geomID, tri)) args->valid[0] = 0;
 }
 
@@ -636,6 +638,7 @@ bool Accelerator::complete(const Found& found, const Ray& ray, SurfaceHit* hit) 
 
 void Accelerator::fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit) {
     float t = rh.ray.tfar;
+    hit->face_index = 0; // meshes and patches set their own
     switch (rec.kind) {
     case Kind::Mesh:
         rec.mesh->fill_hit(rh.hit.primID, rh.hit.u, rh.hit.v, t, ray, hit);

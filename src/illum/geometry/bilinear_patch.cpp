@@ -205,6 +205,7 @@ void BilinearPatchMesh::fill_hit(std::uint32_t patch, float u, float v, float t,
     hit->wo = normalize(-ray.d);
     hit->n = geometric_normal(patch, u, v);
     hit->uv = texture_uv(patch, u, v);
+    hit->face_index = face_index(patch);
     hit->dpdu = texture_frame(*this, patch, u, v).dpdu;
     Normal3f ns = shading_normal(patch, u, v);
     float len2 = dot(ns, ns);

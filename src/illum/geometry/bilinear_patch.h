@@ -44,10 +44,12 @@ struct BilinearPatchMesh final : ShadingPartialsSource {
     std::vector<Normal3f> n;             // per vertex, world space; empty when the mesh gives none
     std::vector<Point2f> uv;             // per vertex; empty when none
     std::vector<std::uint32_t> indices;  // four per patch: p00, p10, p01, p11
+    std::vector<int> face_indices;       // per patch, pbrt-v4's "faceIndices" (Ptex); empty: all 0
     bool flip_normal = false;            // ReverseOrientation xor a handedness-swapping transform
     std::vector<std::uint8_t> rectangle; // per patch, pbrt-v4's IsRectangle; filled by finalize()
 
     std::size_t patch_count() const { return indices.size() / 4; }
+    int face_index(std::size_t patch) const { return face_indices.empty() ? 0 : face_indices[patch]; }
     // p00, p10, p01, p11
     std::array<Point3f, 4> corners(std::size_t patch) const {
         const std::uint32_t* v = &indices[4 * patch];

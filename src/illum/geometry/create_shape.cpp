@@ -66,11 +66,21 @@ void vertex_data(const ShapeDesc& s, TriangleMesh& mesh) {
         throw Error(s.loc, fmt::format("{} has a different number of uv and P", s.type));
 }
 
+// pbrt-v4's "faceIndices" (the face a Ptex texture reads): one per triangle or patch, or none.
+std::vector<int> face_indices(const ShapeDesc& s, std::size_t faces) {
+    std::vector<int> fi = s.params.get_ints("faceIndices");
+    if (!fi.empty() && fi.size() != faces)
+        throw Error(s.params.find("faceIndices")->loc,
+                    fmt::format("{} has {} \"faceIndices\" for {} faces", s.type, fi.size(), faces));
+    return fi;
+}
+
 std::unique_ptr<TriangleMesh> triangle_mesh(const ShapeDesc& s) {
     auto mesh = std::make_unique<TriangleMesh>();
     std::vector<int> idx = positions_and_indices(s, *mesh, 3);
     mesh->indices.assign(idx.begin(), idx.end());
     vertex_data(s, *mesh);
+    mesh->face_indices = face_indices(s, idx.size() / 3);
     return mesh;
 }
 
@@ -84,6 +94,7 @@ std::unique_ptr<BilinearPatchMesh> bilinear_mesh(const ShapeDesc& s) {
     mesh->n = std::move(data.n);
     mesh->uv = std::move(data.uv);
     mesh->indices.assign(idx.begin(), idx.end());
+    mesh->face_indices = face_indices(s, idx.size() / 4);
     return mesh;
 }
 
@@ -151,6 +162,7 @@ bool ply_mesh(const ShapeDesc& s, TextureParams& textures, float edge_scale, Sha
         g.patches->n = data.normals;
         g.patches->uv = data.uvs;
         g.patches->indices.assign(data.quads.begin(), data.quads.end());
+        g.patches->face_indices = std::move(data.quad_face_indices);
     }
     if (data.indices.empty()) {              // quads only, so no displacement
         s.params.get_float("edgelength", 1); // read, as pbrt-v4 does, even unused
@@ -161,6 +173,7 @@ bool ply_mesh(const ShapeDesc& s, TextureParams& textures, float edge_scale, Sha
     g.mesh->n = std::move(data.normals);
     g.mesh->uv = std::move(data.uvs);
     g.mesh->indices.assign(data.indices.begin(), data.indices.end());
+    g.mesh->face_indices = std::move(data.face_indices);
     displace_ply_mesh(s, *g.mesh, textures, edge_scale);
     return true;
 }

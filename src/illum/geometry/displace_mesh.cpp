@@ -33,6 +33,9 @@ void refine_to_edge_length(TriangleMesh& mesh, const Transform& world_from_objec
     for (std::size_t i = 0; i < mesh.p.size(); ++i) world[i] = world_from_object(mesh.p[i]);
     std::vector<std::uint32_t> input = std::move(mesh.indices);
     mesh.indices.clear();
+    // Each piece keeps the face index of the triangle it comes from.
+    std::vector<int> input_faces = std::move(mesh.face_indices);
+    mesh.face_indices.clear();
     // The midpoint vertex of each split edge (keyed by its ends, smaller first).
     std::unordered_map<std::uint64_t, std::uint32_t> midpoint;
     std::vector<std::array<std::uint32_t, 3>> stack;
@@ -46,6 +49,7 @@ void refine_to_edge_length(TriangleMesh& mesh, const Transform& world_from_objec
                   d20 = distance(world[v2], world[v0]);
             if (d01 < max_edge && d12 < max_edge && d20 < max_edge) {
                 mesh.indices.insert(mesh.indices.end(), {v0, v1, v2});
+                if (!input_faces.empty()) mesh.face_indices.push_back(input_faces[f / 3]);
                 if (mesh.indices.size() / 3 > max_triangles)
                     throw Error(
                         fmt::format("displacement refines the mesh beyond {} triangles (edge length {})",

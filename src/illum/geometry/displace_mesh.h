@@ -5,6 +5,8 @@
 //    "edgelength" times Option "displacementedgescale") is split at the midpoint of its longest edge, and
 //    both halves are refined the same way; a split edge's midpoint is shared by the triangles on either
 //    side (its normal the normalised sum of the ends', its uv their mean), so the mesh stays watertight;
+//    each piece keeps its triangle's face index (pbrt-v4 keeps the per-face list unchanged, which no longer
+//    fits the refined mesh);
 // 3. each vertex moves along its (interpolated, not renormalised) normal by the texture's value at its
 //    object-space point and uv, d(p, uv) n;
 // 4. the normals are computed again from the displaced triangles, as in step 1.

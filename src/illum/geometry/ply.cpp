@@ -464,6 +464,7 @@ TriangleMeshData parse_ply(const char* data, size_t size, const std::string& nam
                 }
                 if (keep_quads && poly.size() == 4) {
                     mesh.quads.insert(mesh.quads.end(), {poly[0], poly[1], poly[3], poly[2]});
+                    if (want_face_indices) mesh.quad_face_indices.push_back(face_index);
                     continue;
                 }
                 for (size_t j = 1; j + 1 < poly.size(); ++j) {

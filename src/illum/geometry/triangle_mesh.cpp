@@ -57,6 +57,7 @@ void TriangleMesh::fill_hit(std::uint32_t tri, float b1, float b2, float t, cons
         uv2 = uv[i2];
     }
     hit->uv = {b0 * uv0.x + b1 * uv1.x + b2 * uv2.x, b0 * uv0.y + b1 * uv1.y + b2 * uv2.y};
+    hit->face_index = face_index(tri);
     // dp/du from the uv parameterisation; a fallback frame when it is degenerate.
     Vector2f duv02 = uv0 - uv2, duv12 = uv1 - uv2;
     Vector3f dp02 = p0 - p2, dp12 = p1 - p2;

@@ -16,6 +16,7 @@ struct TriangleMesh final : ShadingPartialsSource {
     std::vector<Normal3f> n;            // per vertex, world space; empty when the mesh gives none
     std::vector<Point2f> uv;            // per vertex; empty when none
     std::vector<std::uint32_t> indices; // three per triangle
+    std::vector<int> face_indices;      // per triangle, pbrt-v4's "faceIndices" (Ptex); empty: all 0
     // pbrt-v4: the geometric normal is normalize(cross(p0 - p2, p1 - p2)), turned to the side of the
     // shading normals when the mesh has them, else flipped by ReverseOrientation xor a transform that
     // swaps handedness.
@@ -28,6 +29,7 @@ struct TriangleMesh final : ShadingPartialsSource {
         return {p[indices[3 * tri]], p[indices[3 * tri + 1]], p[indices[3 * tri + 2]]};
     }
     float triangle_area(std::size_t tri) const;
+    int face_index(std::size_t tri) const { return face_indices.empty() ? 0 : face_indices[tri]; }
     // Transforms object-space data to world space in place.
     void transform(const Transform& world_from_object);
     // Computes the face normals; call once the data is in world space.

@@ -1,6 +1,6 @@
 // pbrt-v4's Texture directive: "float" or "spectrum" textures of type constant, scale, mix, directionmix,
 // bilerp, checkerboard (2D and 3D), imagemap and the noise textures fbm, wrinkled, windy, marble and dots,
-// over every pbrt-v4 mapping; ptex is recognised and approximated by a constant, with a warning.
+// over every pbrt-v4 mapping, and ptex.
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -12,6 +12,7 @@
 #include "illum/image/image_io.h"
 #include "illum/texture/noise_textures.h"
 #include "illum/texture/pbrt_textures.h"
+#include "illum/texture/ptex_texture.h"
 #include "illum/texture/texture_params.h"
 
 namespace illum {
@@ -72,6 +73,26 @@ std::shared_ptr<const Image> load_image(const TextureDesc& t, const std::string&
     return read_encoded_image(path, encoding, gamma, f->loc, params);
 }
 
+// A "ptex" texture's file, read once per file; 1 or 3 channels, as pbrt-v4 accepts. nullptr (recorded in
+// the diagnostics) when it cannot be read.
+std::shared_ptr<const PtexFile> read_ptex(const TextureDesc& t, TextureParams& params) {
+    const Param* f = t.params.find("filename");
+    std::string path = t.params.get_string("filename", "");
+    if (path.empty()) throw Error(t.loc, "ptex needs \"string filename\"");
+    std::shared_ptr<const PtexFile> file;
+    try {
+        file = std::make_shared<const PtexFile>(PtexFile::read(path));
+    } catch (const Error& e) {
+        params.diagnostics().missing_file(f->loc, e.what());
+        return nullptr;
+    }
+    if (file->channels != 1 && file->channels != 3)
+        throw Error(f->loc, fmt::format("\"{}\": only 1- and 3-channel Ptex textures are supported (as in "
+                                        "pbrt-v4); it has {}",
+                                        path, file->channels));
+    return file;
+}
+
 } // namespace
 
 std::shared_ptr<const Image> read_encoded_image(const std::string& path, const std::string& encoding,
@@ -106,7 +127,6 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
     if (!is_float && t.value_type != "spectrum")
         throw Error(t.loc,
                     fmt::format("texture type must be \"float\" or \"spectrum\", not \"{}\"", t.value_type));
-    Diagnostics& diag = params.diagnostics();
     const int footprint_uses = params.footprint_uses();
     bool filters = false; // whether this texture's own value depends on the footprint
     const ColorTexture* ct = nullptr;
@@ -249,11 +269,20 @@ void create_texture(const TextureDesc& t, TextureParams& params) {
             ct = params.own(std::make_unique<DotsTex<ColorTexture, Color3>>(c("outside", Color3(0.0f)),
                                                                             c("inside", Color3(1.0f)), m));
     } else if (t.type == "ptex") {
-        diag.unsupported(t.loc, fmt::format("texture \"{}\" is approximated by a constant 0.5", t.type));
-        if (is_float)
-            ft = params.constant(0.5f);
-        else
-            ct = params.constant(Color3(0.5f));
+        float gamma = encoding_gamma(t, t.params.get_string("encoding", "gamma 2.2"));
+        float scale = t.params.get_float("scale", 1);
+        if (std::shared_ptr<const PtexFile> file = read_ptex(t, params)) {
+            filters = true;
+            PtexLookup l(std::move(file), gamma, scale);
+            if (is_float)
+                ft = params.own(std::make_unique<PtexFloatTexture>(std::move(l)));
+            else
+                ct = params.own(std::make_unique<PtexColorTexture>(std::move(l)));
+        } else if (is_float) { // the build fails with every missing file listed; go on to find the others
+            ft = params.constant(0.0f);
+        } else {
+            ct = params.constant(Color3(0.0f));
+        }
     } else {
         throw Error(t.loc, fmt::format("unknown texture type \"{}\"", t.type));
     }

@@ -75,6 +75,7 @@ public:
         return out;
     }
     const unsigned char* at(std::uint64_t pos) const { return bytes_.data() + pos; }
+    std::uint64_t size() const { return bytes_.size(); }
 
 private:
     std::string path_;
@@ -92,7 +93,8 @@ PtexFile PtexFile::read(const std::string& path) {
     f.triangles = r.get<std::uint32_t>(8) == 0;
     std::uint32_t dt = r.get<std::uint32_t>(12);
     if (dt > 3) throw r.fail("unknown data type " + std::to_string(dt));
-    DataType type = DataType(dt);
+    const DataType type = DataType(dt);
+    f.one_value = type == DataType::UInt8 ? 255.0f : type == DataType::UInt16 ? 65535.0f : 1.0f;
     f.alpha_channel = r.get<std::int32_t>(16);
     f.channels = r.get<std::uint16_t>(20);
     const int levels = r.get<std::uint16_t>(22);
@@ -101,57 +103,60 @@ PtexFile PtexFile::read(const std::string& path) {
                         levelinfo_size = r.get<std::uint32_t>(40);
     if (f.channels < 1 || levels < 1) throw r.fail("no channels or no levels");
     if (nfaces > (1u << 28)) throw r.fail("too many faces");
-    const std::size_t texel = data_size(type) * std::size_t(f.channels);
+    const int nch = f.channels;
+    const std::size_t texel = data_size(type) * std::size_t(nch);
+    if (ext_size >= 4) { // the extended header's border modes (0 clamp, 1 black, 2 periodic)
+        auto border = [&](std::uint16_t m) { return m <= 2 ? PtexBorder(m) : PtexBorder::Clamp; };
+        f.u_border = border(r.get<std::uint16_t>(kHeaderSize));
+        if (ext_size >= 6) f.v_border = border(r.get<std::uint16_t>(kHeaderSize + 4));
+        if (ext_size >= 8) f.tangent_vectors = r.get<std::uint16_t>(kHeaderSize + 6) == 1;
+    }
 
     std::uint64_t pos = kHeaderSize + ext_size;
     std::vector<unsigned char> info =
         r.unzip(pos, faceinfo_size, std::uint64_t(nfaces) * kFaceInfoSize, "face info");
-    pos += faceinfo_size + constdata_size; // the constant data (face means) are not needed
-    std::vector<unsigned char> level_info =
-        r.unzip(pos, levelinfo_size, std::uint64_t(levels) * kLevelInfoSize, "level info");
+    pos += faceinfo_size;
+    std::vector<unsigned char> constant = r.unzip(pos, constdata_size, nfaces * texel, "constant data");
+    pos += constdata_size;
+    // The level info is not zipped (PtexReader::readLevelInfo reads it as it is).
+    r.need(pos, std::uint64_t(levels) * kLevelInfoSize, "the level info");
+    std::vector<unsigned char> level_info(r.at(pos), r.at(pos) + std::size_t(levels) * kLevelInfoSize);
     pos += levelinfo_size;
 
-    std::uint64_t level0_size = 0;
-    std::uint32_t level0_header = 0, level0_faces = 0;
-    std::memcpy(&level0_size, level_info.data(), 8);
-    std::memcpy(&level0_header, level_info.data() + 8, 4);
-    std::memcpy(&level0_faces, level_info.data() + 12, 4);
-    if (level0_faces != nfaces) throw r.fail("level 0 does not hold every face");
-    std::vector<unsigned char> fdh = r.unzip(pos, level0_header, std::uint64_t(nfaces) * 4, "level 0 header");
-    std::uint64_t block = pos + level0_header;
+    // One stored value as a float in the data type's units.
+    auto convert = [&](const unsigned char* src, std::size_t i) -> float {
+        switch (type) {
+        case DataType::UInt8:
+            return float(src[i]);
+        case DataType::UInt16: {
+            std::uint16_t v;
+            std::memcpy(&v, src + 2 * i, 2);
+            return float(v);
+        }
+        case DataType::Half: {
+            std::uint16_t v;
+            std::memcpy(&v, src + 2 * i, 2);
+            return half_to_float(v);
+        }
+        case DataType::Float: {
+            float v;
+            std::memcpy(&v, src + 4 * i, 4);
+            return v;
+        }
+        }
+        return 0;
+    };
 
     // Decodes one block of ures x vres texels into `out` (row-major, channels interleaved).
     auto decode = [&](std::uint64_t at, std::uint32_t word, int ures, int vres, float* out, int row_stride,
                       auto& self) -> void {
         const std::uint32_t size = word & 0x3fffffff, enc = word >> 30;
-        auto convert = [&](const unsigned char* src, std::size_t i) -> float {
-            switch (type) {
-            case DataType::UInt8:
-                return float(src[i]) / 255.0f;
-            case DataType::UInt16: {
-                std::uint16_t v;
-                std::memcpy(&v, src + 2 * i, 2);
-                return float(v) / 65535.0f;
-            }
-            case DataType::Half: {
-                std::uint16_t v;
-                std::memcpy(&v, src + 2 * i, 2);
-                return half_to_float(v);
-            }
-            case DataType::Float: {
-                float v;
-                std::memcpy(&v, src + 4 * i, 4);
-                return v;
-            }
-            }
-            return 0;
-        };
         if (enc == kConstant) {
             r.need(at, texel, "a constant face");
             for (int v = 0; v < vres; ++v)
                 for (int u = 0; u < ures; ++u)
-                    for (int c = 0; c < f.channels; ++c)
-                        out[std::size_t(v) * row_stride + std::size_t(u * f.channels + c)] =
+                    for (int c = 0; c < nch; ++c)
+                        out[std::size_t(v) * row_stride + std::size_t(u * nch + c)] =
                             convert(r.at(at), std::size_t(c));
         } else if (enc == kZipped || enc == kDiffZipped) {
             const std::size_t n = std::size_t(ures) * std::size_t(vres);
@@ -171,10 +176,10 @@ PtexFile PtexFile::read(const std::string& path) {
                 }
             }
             // Channel planes of vres rows of ures values each.
-            for (int c = 0; c < f.channels; ++c)
+            for (int c = 0; c < nch; ++c)
                 for (int v = 0; v < vres; ++v)
                     for (int u = 0; u < ures; ++u)
-                        out[std::size_t(v) * row_stride + std::size_t(u * f.channels + c)] = convert(
+                        out[std::size_t(v) * row_stride + std::size_t(u * nch + c)] = convert(
                             planes.data(), std::size_t(c) * n + std::size_t(v) * ures + std::size_t(u));
         } else { // tiled
             r.need(at, 6, "a tiled face");
@@ -191,54 +196,120 @@ PtexFile PtexFile::read(const std::string& path) {
                 std::memcpy(&w, &th[std::size_t(t) * 4], 4);
                 if ((w >> 30) == kTiled) throw r.fail("a tile is itself tiled");
                 int ut = t % ntu, vt = t / ntu;
-                self(tile_at, w, tu, tv,
-                     out + std::size_t(vt * tv) * row_stride + std::size_t(ut * tu * f.channels), row_stride,
-                     self);
+                self(tile_at, w, tu, tv, out + std::size_t(vt * tv) * row_stride + std::size_t(ut * tu * nch),
+                     row_stride, self);
                 tile_at += w & 0x3fffffff;
             }
         }
     };
 
+    // Face info, and room for every reduction of each face.
     f.faces.resize(nfaces);
+    std::vector<std::vector<char>> have(nfaces); // which reductions are filled
     for (std::uint32_t i = 0; i < nfaces; ++i) {
         const unsigned char* fi = info.data() + std::size_t(i) * kFaceInfoSize;
-        int ulog2 = std::int8_t(fi[0]), vlog2 = std::int8_t(fi[1]);
-        if (ulog2 < 0 || vlog2 < 0 || ulog2 > 15 || vlog2 > 15 || ulog2 + vlog2 > 24)
-            throw r.fail("face " + std::to_string(i) + " has resolution 2^" + std::to_string(ulog2) +
-                         " x 2^" + std::to_string(vlog2));
         PtexFace& face = f.faces[i];
-        face.ures = 1 << ulog2;
-        face.vres = 1 << vlog2;
-        face.texels.resize(std::size_t(face.ures) * std::size_t(face.vres) * std::size_t(f.channels));
-        std::uint32_t word;
-        std::memcpy(&word, &fdh[std::size_t(i) * 4], 4);
-        decode(block, word, face.ures, face.vres, face.texels.data(), face.ures * f.channels, decode);
-        block += word & 0x3fffffff;
+        face.ulog2 = std::int8_t(fi[0]);
+        face.vlog2 = std::int8_t(fi[1]);
+        if (face.ulog2 < 0 || face.vlog2 < 0 || face.ulog2 > 15 || face.vlog2 > 15 ||
+            face.ulog2 + face.vlog2 > 24)
+            throw r.fail("face " + std::to_string(i) + " has resolution 2^" + std::to_string(face.ulog2) +
+                         " x 2^" + std::to_string(face.vlog2));
+        for (int e = 0; e < 4; ++e) face.adjacent_edges[std::size_t(e)] = (fi[2] >> (2 * e)) & 3;
+        face.flags = fi[3];
+        for (int e = 0; e < 4; ++e) {
+            std::int32_t a;
+            std::memcpy(&a, fi + 4 + 4 * e, 4);
+            face.adjacent_faces[std::size_t(e)] = a >= 0 && std::uint32_t(a) < nfaces ? a : -1;
+        }
+        std::size_t total = 0;
+        for (int ru = 0; ru <= face.ulog2; ++ru)
+            for (int rv = 0; rv <= face.vlog2; ++rv) {
+                face.offsets.push_back(std::uint32_t(total));
+                total += (std::size_t(1) << (ru + rv)) * std::size_t(nch);
+            }
+        face.texels.resize(total);
+        have[i].assign(face.offsets.size(), 0);
+        // 1 x 1: the constant data (the face's mean), which is the whole face when it is constant.
+        float* one = face.texels.data();
+        for (int c = 0; c < nch; ++c) one[c] = convert(constant.data() + i * texel, std::size_t(c));
+        have[i][0] = 1;
+        if (face.constant()) {
+            for (std::size_t k = 0; k < total; ++k) face.texels[k] = one[k % std::size_t(nch)];
+            std::fill(have[i].begin(), have[i].end(), 1);
+        }
     }
-    if (block > pos + level0_header + level0_size) throw r.fail("the faces' blocks overrun level 0");
-    return f;
-}
-
-void PtexFile::lookup(int face, Point2f uv, float* out) const {
-    if (face < 0 || std::size_t(face) >= faces.size()) {
-        std::fill(out, out + channels, 0.0f);
-        return;
-    }
-    const PtexFace& f = faces[std::size_t(face)];
-    // Texel centres at (i + 1/2) / res; clamped at the face's edges.
-    float x = std::clamp(uv.x, 0.0f, 1.0f) * float(f.ures) - 0.5f,
-          y = std::clamp(uv.y, 0.0f, 1.0f) * float(f.vres) - 0.5f;
-    int x0 = int(std::floor(x)), y0 = int(std::floor(y));
-    float sx = x - float(x0), sy = y - float(y0);
-    auto at = [&](int u, int v, int c) {
-        u = std::clamp(u, 0, f.ures - 1);
-        v = std::clamp(v, 0, f.vres - 1);
-        return f.texels[(std::size_t(v) * std::size_t(f.ures) + std::size_t(u)) * std::size_t(channels) +
-                        std::size_t(c)];
+    // The reduction faces' order: decreasing smaller side, stable (a constant face counts as 2).
+    std::vector<std::uint32_t> by_size(nfaces);
+    for (std::uint32_t i = 0; i < nfaces; ++i) by_size[i] = i;
+    auto smaller = [&](std::uint32_t i) {
+        const PtexFace& face = f.faces[i];
+        return face.constant() ? 1 : std::min(face.ulog2, face.vlog2);
     };
-    for (int c = 0; c < channels; ++c)
-        out[c] = (1 - sy) * ((1 - sx) * at(x0, y0, c) + sx * at(x0 + 1, y0, c)) +
-                 sy * ((1 - sx) * at(x0, y0 + 1, c) + sx * at(x0 + 1, y0 + 1, c));
+    std::stable_sort(by_size.begin(), by_size.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return smaller(a) > smaller(b); });
+
+    std::uint64_t level_at = pos;
+    for (int l = 0; l < levels; ++l) {
+        std::uint64_t level_size = 0;
+        std::uint32_t header_size = 0, level_faces = 0;
+        std::memcpy(&level_size, level_info.data() + l * kLevelInfoSize, 8);
+        std::memcpy(&header_size, level_info.data() + l * kLevelInfoSize + 8, 4);
+        std::memcpy(&level_faces, level_info.data() + l * kLevelInfoSize + 12, 4);
+        if (l == 0 && level_faces != nfaces) throw r.fail("level 0 does not hold every face");
+        if (level_faces > nfaces) throw r.fail("level " + std::to_string(l) + " holds too many faces");
+        std::vector<unsigned char> fdh =
+            r.unzip(level_at, header_size, std::uint64_t(level_faces) * 4, "level header");
+        std::uint64_t block = level_at + header_size;
+        for (std::uint32_t k = 0; k < level_faces; ++k) {
+            std::uint32_t word;
+            std::memcpy(&word, &fdh[std::size_t(k) * 4], 4);
+            const std::uint32_t id = l == 0 ? k : by_size[k];
+            PtexFace& face = f.faces[id];
+            const int ru = face.ulog2 - l, rv = face.vlog2 - l;
+            if (!face.constant() && ru >= 0 && rv >= 0) {
+                const std::size_t slot = std::size_t(ru * (face.vlog2 + 1) + rv);
+                decode(block, word, 1 << ru, 1 << rv, face.texels.data() + face.offsets[slot],
+                       (1 << ru) * nch, decode);
+                have[id][slot] = 1;
+            }
+            block += word & 0x3fffffff;
+        }
+        if (block > level_at + header_size + level_size)
+            throw r.fail("the faces' blocks overrun level " + std::to_string(l));
+        level_at += level_size;
+    }
+
+    // The reductions the file does not hold, as Ptex makes them.
+    const bool integer = type == DataType::UInt8 || type == DataType::UInt16;
+    for (std::uint32_t i = 0; i < nfaces; ++i) {
+        PtexFace& face = f.faces[i];
+        auto slot = [&](int ru, int rv) { return std::size_t(ru * (face.vlog2 + 1) + rv); };
+        auto make = [&](int ru, int rv, auto& self) -> void {
+            if (have[i][slot(ru, rv)]) return;
+            const int redu = face.ulog2 - ru, redv = face.vlog2 - rv;
+            const bool along_u = redu == redv ? (ru & 1) != 0 : redu > redv;
+            const int su = along_u ? ru + 1 : ru, sv = along_u ? rv : rv + 1;
+            self(su, sv, self);
+            const float* src = face.texels.data() + face.offsets[slot(su, sv)];
+            float* dst = face.texels.data() + face.offsets[slot(ru, rv)];
+            const int uw = 1 << ru, vw = 1 << rv, src_row = (1 << su) * nch;
+            for (int v = 0; v < vw; ++v)
+                for (int u = 0; u < uw; ++u)
+                    for (int c = 0; c < nch; ++c) {
+                        const float* a = along_u
+                                             ? src + std::size_t(v) * src_row + std::size_t(2 * u * nch + c)
+                                             : src + std::size_t(2 * v) * src_row + std::size_t(u * nch + c);
+                        float sum = a[0] + a[along_u ? nch : src_row];
+                        dst[(std::size_t(v) * uw + std::size_t(u)) * nch + std::size_t(c)] =
+                            integer ? std::floor(sum / 2) : sum / 2;
+                    }
+            have[i][slot(ru, rv)] = 1;
+        };
+        for (int ru = 0; ru <= face.ulog2; ++ru)
+            for (int rv = 0; rv <= face.vlog2; ++rv) make(ru, rv, make);
+    }
+    return f;
 }
 
 } // namespace illum

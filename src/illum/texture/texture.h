@@ -31,6 +31,9 @@ struct TextureEvalContext {
     Point2f uv;
     Vector3f dpdx, dpdy;
     float dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
+    // The face a Ptex texture reads (pbrt-v4's faceIndex): the mesh's "faceIndices" entry for the hit's
+    // triangle or bilinear patch (a PLY file's "face_indices"), 0 where the shape gives none.
+    int face_index = 0;
 };
 
 class ColorTexture {
