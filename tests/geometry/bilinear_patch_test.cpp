@@ -7,10 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include "illum/geometry/accelerator.h"
 #include "illum/geometry/bilinear_patch.h"
+#include "illum/image/image_io.h"
 #include "illum/light/diffuse_area_light.h"
 #include "illum/math/bilinear_warp.h"
 #include "illum/math/rng.h"
@@ -340,6 +344,127 @@ TEST(BilinearPatchRender, DeterministicAcrossThreadCounts) {
     ASSERT_EQ(ia.pixel_count(), ib.pixel_count());
     for (std::size_t i = 0; i < ia.pixel_count(); ++i)
         for (int c = 0; c < 3; ++c) ASSERT_EQ(ia.data()[i][c], ib.data()[i][c]) << i;
+}
+
+TEST(BilinearPatch, EmissionImageSamplesItsPixels) {
+    // pbrt-v4's "emissionfilename": (u, v) drawn in proportion to the pixels (row-major, v rows), so each
+    // pixel's share of the samples is its weight's, the density per area is pdf(u, v) / |∂p/∂u × ∂p/∂v|
+    // (E[1/p_A] = the area it reaches), and a rectangle gives up solid-angle sampling for it, its pdf()
+    // agreeing.
+    const float weights[] = {1, 2, 3, 4, 0, 5, 1, 8};
+    const int nu = 4, nv = 2;
+    auto m = std::make_unique<BilinearPatchMesh>();
+    m->p = {{0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {2, 1, 0}};
+    m->indices = {0, 1, 2, 3};
+    m->emission_distribution = std::make_shared<const Distribution2D>(weights, nu, nv);
+    m->finalize();
+    BilinearPatchShape shape(m.get(), 0);
+    const float total = 24;
+    const int n = 200000;
+    std::vector<int> counts(nu * nv, 0);
+    test::MeanAccumulator inv_pdf;
+    PCG32 rng(17);
+    for (int i = 0; i < n; ++i) {
+        AreaShapeSample s = shape.sample_area({rng.uniform_float(), rng.uniform_float()});
+        ASSERT_GT(s.pdf.value, 0);
+        const int iu = std::min(nu - 1, int(s.p.x / 2 * nu)), iv = std::min(nv - 1, int(s.p.y * nv));
+        ++counts[iv * nu + iu];
+        EXPECT_NEAR(s.pdf.value, weights[iv * nu + iu] / total * nu * nv / 2, 1e-4f * s.pdf.value);
+        EXPECT_NEAR(shape.area_pdf(s.p).value, s.pdf.value, 1e-4f * s.pdf.value);
+        inv_pdf.add(1 / s.pdf.value);
+    }
+    for (int k = 0; k < nu * nv; ++k) {
+        const double p = weights[k] / total, sd = std::sqrt(n * p * (1 - p));
+        EXPECT_NEAR(counts[k], n * p, 5 * sd + 0.5) << "pixel " << k;
+    }
+    // E[1/p_A] is the area where p_A > 0: all but the zero pixel's eighth.
+    EXPECT_NEAR(inv_pdf.mean, 2 * 7.0 / 8, 4 * inv_pdf.std_error());
+    ShapeSampleContext ctx{{0.5f, 0.5f, 0.3f}, {}, {0, 0, -1}};
+    for (int i = 0; i < 2000; ++i) {
+        auto s = shape.sample(ctx, {rng.uniform_float(), rng.uniform_float()});
+        ASSERT_TRUE(s);
+        float pdf = shape.pdf(ctx, normalize(s->p - ctx.p), s->p, s->n).value;
+        EXPECT_NEAR(pdf, s->pdf.value, 1e-3f * s->pdf.value);
+    }
+}
+
+// An emitting square (a bilinear patch without uv) whose area light reads an 8x8 image with one bright
+// pixel, above a floor, rendered with and without "emissionfilename" naming the same image.
+class EmissionFilename : public ::testing::Test {
+protected:
+    void SetUp() override {
+        root_ = std::filesystem::temp_directory_path() / ("illum_emission_" + std::to_string(::getpid()));
+        std::filesystem::create_directories(root_);
+        // A smooth bright spot (σ 1.5 pixels) in the image's upper right (v near 1 on the patch) over 0.5.
+        Image img(16, 16);
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x)
+                img.at(x, y) = Color3(
+                    0.5f + 50 * std::exp(-((x - 10.5f) * (x - 10.5f) + (y - 4.5f) * (y - 4.5f)) / 4.5f));
+        write_image(img, path("emit.pfm"));
+    }
+    void TearDown() override { std::filesystem::remove_all(root_); }
+    std::string path(const std::string& name) const { return (root_ / name).string(); }
+    std::string scene(const std::string& shape_extra) const {
+        return fmt::format(R"(LookAt 0 -3 3  0 0 0  0 0 1
+Camera "perspective" "float fov" 45
+Film "rgb" "integer xresolution" 24 "integer yresolution" 24
+Integrator "path" "integer maxdepth" 1
+WorldBegin
+Material "diffuse" "rgb reflectance" [0.8 0.8 0.8]
+Shape "trianglemesh" "point3 P" [-4 -4 0  4 -4 0  4 4 0  -4 4 0] "integer indices" [0 1 2 0 2 3]
+AttributeBegin
+AreaLightSource "diffuse" "string filename" "{}"
+ReverseOrientation
+Shape "bilinearmesh" "point3 P" [-1 -1 1  1 -1 1  -1 1 1  1 1 1] {}
+AttributeEnd
+)",
+                           path("emit.pfm"), shape_extra);
+    }
+    std::filesystem::path root_;
+};
+
+TEST_F(EmissionFilename, KeepsTheMeanAndCutsTheNoise) {
+    // Light sampling by the image is unbiased (the same means) and, with one pixel carrying most of the
+    // power, far less noisy: the variance per pixel, from the difference of two seeds, drops.
+    const std::string sampled = fmt::format("\"string emissionfilename\" \"{}\"", path("emit.pfm"));
+    auto noise = [](const Image& a, const Image& b) {
+        double sum = 0;
+        for (std::size_t i = 0; i < a.pixel_count(); ++i) {
+            double d = a.data()[i][1] - b.data()[i][1];
+            sum += d * d / 2;
+        }
+        return sum / double(a.pixel_count());
+    };
+    test::RenderSetup s1, s2;
+    s1.spp = s2.spp = 64;
+    s1.seed = 1;
+    s2.seed = 2;
+    Image plain1 = test::render_pbrt(scene(""), s1).image, plain2 = test::render_pbrt(scene(""), s2).image;
+    Image image1 = test::render_pbrt(scene(sampled), s1).image,
+          image2 = test::render_pbrt(scene(sampled), s2).image;
+    for (int c = 0; c < 3; ++c) {
+        auto a = test::pixel_mean(plain1, c), b = test::pixel_mean(image1, c);
+        EXPECT_NEAR(a.mean, b.mean, 4 * std::hypot(a.standard_error, b.standard_error)) << "channel " << c;
+        EXPECT_GT(b.mean, 0.01);
+    }
+    const double plain_noise = noise(plain1, plain2), image_noise = noise(image1, image2);
+    EXPECT_LT(image_noise, 0.25 * plain_noise) << plain_noise << " " << image_noise;
+    std::printf("noise per pixel: %.3g without the image, %.3g with it\n", plain_noise, image_noise);
+}
+
+TEST_F(EmissionFilename, IgnoredWithUvAndAMissingFileIsReported) {
+    auto with_uv = build_scene(parse_pbrt_string(
+        scene(fmt::format("\"string emissionfilename\" \"{}\" \"point2 uv\" [0 0 1 0 0 1 1 1]",
+                          path("emit.pfm"))),
+        "<test>", "."));
+    ASSERT_EQ(with_uv->warnings.size(), 1u);
+    EXPECT_NE(with_uv->warnings.front().find("emissionfilename"), std::string::npos)
+        << with_uv->warnings.front();
+    EXPECT_THROW(
+        build_scene(parse_pbrt_string(
+            scene(fmt::format("\"string emissionfilename\" \"{}\"", path("none.pfm"))), "<test>", ".")),
+        Error);
 }
 
 } // namespace

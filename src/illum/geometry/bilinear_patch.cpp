@@ -272,6 +272,7 @@ float BilinearPatchShape::area_density(Point2f uv) const {
     auto c = mesh_->corners(index_);
     float jac = length(cross(dpdu_at(c, uv.y), dpdv_at(c, uv.x)));
     if (!(jac > 0)) return 0;
+    if (mesh_->emission_distribution) return mesh_->emission_distribution->pdf(uv) / jac;
     if (is_rectangle()) return 1 / jac;
     // The corner weights: |∂p/∂u × ∂p/∂v| at (0,0), (1,0), (0,1), (1,1).
     std::array<float, 4> w = {
@@ -291,7 +292,9 @@ ShapePoint BilinearPatchShape::point_at(Point2f uv) const {
 
 AreaShapeSample BilinearPatchShape::sample_area(Point2f u) const {
     Point2f uv = u;
-    if (!is_rectangle()) {
+    if (mesh_->emission_distribution) {
+        uv = mesh_->emission_distribution->sample(u);
+    } else if (!is_rectangle()) {
         auto c = mesh_->corners(index_);
         std::array<float, 4> w = {
             length(cross(c[1] - c[0], c[2] - c[0])), length(cross(c[1] - c[0], c[3] - c[1])),
@@ -336,7 +339,7 @@ std::array<float, 4> cosine_weights(const std::array<Point3f, 4>& c, const Shape
 } // namespace
 
 std::optional<ShapeSample> BilinearPatchShape::sample(const ShapeSampleContext& ctx, Point2f u) const {
-    if (!is_rectangle()) return AreaShape::sample(ctx, u);
+    if (!samples_solid_angle()) return AreaShape::sample(ctx, u);
     auto c = mesh_->corners(index_);
     Vector3f eu = c[1] - c[0], ev = c[2] - c[0];
     if (spherical_rectangle_solid_angle(ctx.p, c[0], eu, ev) <= kMinSphericalSolidAngle)
@@ -358,7 +361,7 @@ std::optional<ShapeSample> BilinearPatchShape::sample(const ShapeSampleContext& 
 
 SolidAnglePdf BilinearPatchShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,
                                       Normal3f n_hit) const {
-    if (is_rectangle()) {
+    if (samples_solid_angle()) {
         auto c = mesh_->corners(index_);
         Vector3f eu = c[1] - c[0], ev = c[2] - c[0];
         float solid_angle = spherical_rectangle_solid_angle(ctx.p, c[0], eu, ev);

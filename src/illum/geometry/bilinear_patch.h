@@ -14,17 +14,22 @@
 // (spherical rectangle, Ureña et al. 2013) warped by the bilinear interpolation of the receiver's cosine
 // towards its corners when that solid angle exceeds 1e-4 sr; any other patch by (u, v) drawn in proportion
 // to the bilinear interpolation of |∂p/∂u × ∂p/∂v| at its corners, whose density per unit area is
-// bilinear_pdf(u, v) / |∂p/∂u × ∂p/∂v| (approximately uniform, exactly normalised).
+// bilinear_pdf(u, v) / |∂p/∂u × ∂p/∂v| (approximately uniform, exactly normalised). A mesh with pbrt-v4's
+// "emissionfilename" samples every patch's (u, v) by that image instead (piecewise constant in the pixels'
+// channel average, v = 0 at the image's bottom row, to match an area light's image looked up at (u, 1 - v)):
+// density image_pdf(u, v) / |∂p/∂u × ∂p/∂v|.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "illum/geometry/shape.h"
 #include "illum/geometry/surface_hit.h"
 #include "illum/math/bounds.h"
+#include "illum/math/distribution.h"
 #include "illum/math/transform.h"
 
 namespace illum {
@@ -47,6 +52,9 @@ struct BilinearPatchMesh final : ShadingPartialsSource {
     std::vector<int> face_indices;       // per patch, pbrt-v4's "faceIndices" (Ptex); empty: all 0
     bool flip_normal = false;            // ReverseOrientation xor a handedness-swapping transform
     std::vector<std::uint8_t> rectangle; // per patch, pbrt-v4's IsRectangle; filled by finalize()
+    // pbrt-v4's "emissionfilename": the density over (u, v) every patch of the mesh samples its emitting
+    // points by (null: none).
+    std::shared_ptr<const Distribution2D> emission_distribution;
 
     std::size_t patch_count() const { return indices.size() / 4; }
     int face_index(std::size_t patch) const { return face_indices.empty() ? 0 : face_indices[patch]; }
@@ -102,6 +110,8 @@ public:
 
 private:
     bool is_rectangle() const { return mesh_->rectangle[index_] != 0; }
+    // Whether the patch is sampled by the solid angle it subtends (a rectangle without an emission image).
+    bool samples_solid_angle() const { return is_rectangle() && !mesh_->emission_distribution; }
     // The density per unit area of sample_area() at patch parameters (u, v).
     float area_density(Point2f uv) const;
     ShapePoint point_at(Point2f uv) const;

@@ -9,6 +9,7 @@
 #include "illum/geometry/loop_subdivision.h"
 #include "illum/geometry/ply.h"
 #include "illum/geometry/sphere.h"
+#include "illum/image/image_io.h"
 
 namespace illum {
 
@@ -84,8 +85,40 @@ std::unique_ptr<TriangleMesh> triangle_mesh(const ShapeDesc& s) {
     return mesh;
 }
 
-// pbrt-v4's bilinearmesh: four indices per patch (p00, p10, p01, p11), per-vertex "N" and "uv".
-std::unique_ptr<BilinearPatchMesh> bilinear_mesh(const ShapeDesc& s) {
+// pbrt-v4's "emissionfilename" of a bilinearmesh: the density its patches sample emitting points by, in
+// proportion to the image's pixels' channel average (pbrt-v4's Image::GetSamplingDistribution), the image
+// flipped so that v = 0 is its bottom row (an area light's image is read at (u, 1 - v)). pbrt-v4 ignores it,
+// with an error message, when the mesh has "uv"; so does illum, with a warning.
+std::shared_ptr<const Distribution2D> emission_distribution(const ShapeDesc& s, bool has_uv,
+                                                            Diagnostics& diag) {
+    const Param* p = s.params.find("emissionfilename");
+    std::string file = s.params.get_string("emissionfilename", "");
+    if (file.empty()) return nullptr;
+    if (has_uv) {
+        diag.unsupported(p->loc, "bilinearmesh: \"emissionfilename\" is ignored when \"uv\" is given (as in "
+                                 "pbrt-v4)");
+        return nullptr;
+    }
+    Image img;
+    try {
+        img = read_image(file);
+    } catch (const Error& e) {
+        diag.missing_file(p->loc, e.what());
+        return nullptr;
+    }
+    const int w = img.width(), h = img.height();
+    std::vector<float> weights(std::size_t(w) * std::size_t(h));
+    for (int row = 0; row < h; ++row)
+        for (int x = 0; x < w; ++x) {
+            Color3 c = img(x, h - 1 - row);
+            weights[std::size_t(row) * std::size_t(w) + std::size_t(x)] = (c.r + c.g + c.b) / 3;
+        }
+    return std::make_shared<const Distribution2D>(weights, w, h);
+}
+
+// pbrt-v4's bilinearmesh: four indices per patch (p00, p10, p01, p11), per-vertex "N" and "uv", and
+// "emissionfilename".
+std::unique_ptr<BilinearPatchMesh> bilinear_mesh(const ShapeDesc& s, Diagnostics& diag) {
     TriangleMesh data;
     std::vector<int> idx = positions_and_indices(s, data, 4);
     vertex_data(s, data);
@@ -95,6 +128,7 @@ std::unique_ptr<BilinearPatchMesh> bilinear_mesh(const ShapeDesc& s) {
     mesh->uv = std::move(data.uv);
     mesh->indices.assign(idx.begin(), idx.end());
     mesh->face_indices = face_indices(s, idx.size() / 4);
+    mesh->emission_distribution = emission_distribution(s, !mesh->uv.empty(), diag);
     return mesh;
 }
 
@@ -235,7 +269,7 @@ std::optional<ShapeGeometry> create_shape(const ShapeDesc& s, TextureParams& tex
     if (s.type == "trianglemesh") {
         g.mesh = triangle_mesh(s);
     } else if (s.type == "bilinearmesh") {
-        g.patches = bilinear_mesh(s);
+        g.patches = bilinear_mesh(s, textures.diagnostics());
     } else if (s.type == "plymesh") {
         if (!ply_mesh(s, textures, displacement_edge_scale, g)) return std::nullopt;
     } else if (s.type == "sphere") {

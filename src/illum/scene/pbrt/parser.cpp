@@ -401,12 +401,13 @@ private:
             if (first_num) wrong_kind(first_num, "quoted strings", "number");
             if (first_bool) wrong_kind(first_bool, "quoted strings", "bool");
             // File names resolve here, once, against the folder of the file that names them (the builder
-            // and the create functions never join folders again): pbrt-v4's "filename", "normalmap" and
-            // "lensfile", the realistic camera's "aperture" image (but for its built-in shapes), and the
-            // "file" of illum's measured "merl" material (but for its built-in "synthetic:ALPHA" tables).
+            // and the create functions never join folders again): pbrt-v4's "filename", "normalmap",
+            // "emissionfilename" and "lensfile", the realistic camera's "aperture" image (but for its
+            // built-in shapes), and the "file" of illum's measured "merl" material (but for its built-in
+            // "synthetic:ALPHA" tables).
             if (resolve_files && p.type == ParamType::String &&
                 (p.name == "filename" || p.name == "normalmap" || p.name == "lensfile" || p.name == "file" ||
-                 p.name == "aperture"))
+                 p.name == "aperture" || p.name == "emissionfilename"))
                 for (auto& str : strs) {
                     bool builtin =
                         (p.name == "file" && str.rfind("synthetic:", 0) == 0) ||
