@@ -56,6 +56,9 @@ public:
     // True when generate_ray's direction depends on the wavelength (a dispersive lens): a spectral
     // integrator then keeps only the hero wavelength, whose path the ray is.
     virtual bool is_dispersive() const { return false; }
+    // Whether generate_ray reads u_lens (a pinhole does not: the renderer then skips computing it, keeping
+    // the sampler's dimensions where they were).
+    virtual bool uses_lens_sample() const { return true; }
 
     // Camera importance (camera_importance.h), for light tracing. Cameras without it (the realistic lens
     // system) answer false and return nothing.
@@ -89,6 +92,7 @@ public:
     PerspectiveCamera(const Transform& world_from_camera, int width, int height, float fov_deg,
                       float lens_radius = 0, float focal_distance = 1e6f, const Screen* screen = nullptr);
     std::optional<CameraRay> generate_ray(Point2f p_raster, Point2f u_lens, float lambda_nm) const override;
+    bool uses_lens_sample() const override { return lens_radius_ > 0; }
     std::optional<CameraRay> generate_ray_differential(Point2f p_raster, Point2f u_lens, float lambda_nm,
                                                        RayDifferentials* rd) const override;
 
@@ -114,6 +118,7 @@ public:
     OrthographicCamera(const Transform& world_from_camera, int width, int height, float lens_radius = 0,
                        float focal_distance = 1e6f, const Screen* screen = nullptr);
     std::optional<CameraRay> generate_ray(Point2f p_raster, Point2f u_lens, float lambda_nm) const override;
+    bool uses_lens_sample() const override { return lens_radius_ > 0; }
     std::optional<CameraRay> generate_ray_differential(Point2f p_raster, Point2f u_lens, float lambda_nm,
                                                        RayDifferentials* rd) const override;
 

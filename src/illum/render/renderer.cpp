@@ -115,6 +115,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     const bool spectral = options.spectral && integrator.radiometric();
     const bool radiometric = integrator.radiometric();
     const bool dispersive_camera = spectral && scene.camera->is_dispersive();
+    const bool uses_lens = scene.camera->uses_lens_sample();
     // pbrt-v4 scales the differentials to the samples' spacing only when the samples are jittered.
     const float diff_scale =
         scene.request.disable_pixel_jitter ? 1.0f : ray_differential_scale(options.spp > 0 ? options.spp : 1);
@@ -138,7 +139,11 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                 tc.sampler.start_pixel_sample({x, y}, share.index(k));
                                 FilterSample fs = scene.pixel_filter_sample(tc.sampler.get_pixel_2d());
                                 Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
-                                Point2f u_lens = tc.sampler.get_2d();
+                                Point2f u_lens{0.5f, 0.5f};
+                                if (uses_lens)
+                                    u_lens = tc.sampler.get_2d();
+                                else
+                                    tc.sampler.skip_2d();
                                 tc.lambda = spectral ? SampledWavelengths::sample_visible(
                                                            scene.wavelength_sample(tc.sampler.get_1d()),
                                                            scene.color_space)

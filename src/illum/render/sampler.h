@@ -156,6 +156,14 @@ public:
         return other_2d();
     }
 
+    // Moves past the next 2D dimension pair without computing it (the sequence afterwards is get_2d()'s).
+    void skip_2d() {
+        if (kind_ == SamplerKind::sobol)
+            ++dimension_;
+        else
+            (void)get_2d();
+    }
+
     Point2f get_pixel_2d() {
         if (kind_ == SamplerKind::independent) {
             PCG32 r = pixel_rng_;
