@@ -321,3 +321,32 @@ TEST(Sampler, SobolGeneratorMatrix) {
 
 } // namespace
 } // namespace illum
+
+namespace illum {
+namespace {
+
+TEST(Sampler, SkippingA2DPairLeavesTheRestOfTheSequence) {
+    // The renderer skips a pinhole's lens pair: the dimensions after it must be those get_2d() leaves.
+    for (SamplerKind kind :
+         {SamplerKind::independent, SamplerKind::sobol, SamplerKind::zsobol, SamplerKind::paddedsobol,
+          SamplerKind::halton, SamplerKind::pmj02bn, SamplerKind::stratified}) {
+        Sampler a(kind, 16, 7), b(kind, 16, 7);
+        for (int index : {0, 5, 15}) {
+            a.start_pixel_sample({3, 4}, index);
+            b.start_pixel_sample({3, 4}, index);
+            (void)a.get_pixel_2d();
+            (void)b.get_pixel_2d();
+            (void)a.get_2d();
+            b.skip_2d();
+            for (int k = 0; k < 3; ++k) {
+                Point2f pa = a.get_2d(), pb = b.get_2d();
+                EXPECT_EQ(pa.x, pb.x) << sampler_kind_name(kind) << " " << index;
+                EXPECT_EQ(pa.y, pb.y) << sampler_kind_name(kind) << " " << index;
+                EXPECT_EQ(a.get_1d(), b.get_1d()) << sampler_kind_name(kind) << " " << index;
+            }
+        }
+    }
+}
+
+} // namespace
+} // namespace illum
