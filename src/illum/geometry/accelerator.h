@@ -109,12 +109,20 @@ public:
         Found hits[kMaxShadowCrossings];
     };
     bool shadow_crossings(const Ray& ray, ShadowCrossings* out) const;
+    // Whether any geometry is passable (false: a shadow ray is blocked by whatever it meets).
+    bool any_passable() const { return any_passable_; }
     // Marks every geometry (in prototypes too) whose material passable(material) says shadow rays pass.
     template <class Passable>
     void mark_passable(Passable&& passable) {
-        for (Record& r : records_) r.passable = passable(r.material);
+        any_passable_ = false;
+        auto mark = [&](Record& r) {
+            r.passable = passable(r.material);
+            // An instance's own record is never tested (its prototype's records are).
+            if (r.passable && r.kind != Kind::Instance) any_passable_ = true;
+        };
+        for (Record& r : records_) mark(r);
         for (auto& p : prototypes_)
-            for (Record& r : p->records) r.passable = passable(r.material);
+            for (Record& r : p->records) mark(r);
     }
 
     Bounds3f bounds() const { return bounds_; }
@@ -186,6 +194,7 @@ private:
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
     std::vector<Record> records_;
+    bool any_passable_ = true; // until mark_passable() says otherwise
     std::vector<std::unique_ptr<Prototype>> prototypes_;
     Prototype* building_ = nullptr;             // the prototype under construction, if any
     std::vector<PendingCurves> pending_curves_; // the world's

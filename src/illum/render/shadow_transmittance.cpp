@@ -90,10 +90,14 @@ SampledSpectrum crossing_by_crossing(const Scene& scene, Ray ray, const ShadowTa
 SampledSpectrum shadow_transmittance(const Scene& scene, Ray ray, const ShadowTarget& target, int ch,
                                      PCG32& rng, const SampledWavelengths& lambda, SampledSpectrum* r_u,
                                      SampledSpectrum* r_l, std::uint64_t* rays, HomogeneousCache* cache) {
+    ++*rays;
+    // In vacuum, with nothing passable (every scene without media), the ray is blocked or not: one plain
+    // occlusion test, no context filter.
+    if (!ray.medium && !scene.accelerator.any_passable())
+        return scene.accelerator.occluded(ray) ? SampledSpectrum(0.0f) : SampledSpectrum(1.0f);
     // One traversal gathers the surfaces the ray passes; the stretches between them are in the media the
     // surfaces separate.
     Accelerator::ShadowCrossings xs;
-    ++*rays;
     if (!scene.accelerator.shadow_crossings(ray, &xs)) {
         if (!xs.overflow) return SampledSpectrum(0.0f); // blocked
         return crossing_by_crossing(scene, ray, target, ch, rng, lambda, r_u, r_l, rays, cache);
