@@ -64,15 +64,15 @@ std::string still_scene(double x) {
 }
 
 // The plane's radiance at (x, y) lit by the sphere centred at (cx, kCentreY, kCentreZ).
-double plane_radiance(double x, double y, double cx) {
+double plane_radiance(double x, double y, double cx, double radius = kRadius) {
     double dx = cx - x, dy = kCentreY - y, dz = kCentreZ;
     double d = std::sqrt(dx * dx + dy * dy + dz * dz);
-    return kRho * kL * kRadius * kRadius * dz / (d * d * d);
+    return kRho * kL * radius * radius * dz / (d * d * d);
 }
 
 // Each pixel's mean over its footprint (midpoint rule, 16 x 4 points) and over the sphere's positions
 // `centres` (equally weighted). The image's x runs along the world's -x (pbrt's LookAt is left-handed).
-Image closed_form(const std::vector<double>& centres) {
+Image closed_form(const std::vector<double>& centres, const std::vector<double>& radii = {}) {
     Image img(kWidth, 1);
     const int nx = 16, ny = 4;
     for (int i = 0; i < kWidth; ++i) {
@@ -81,7 +81,8 @@ Image closed_form(const std::vector<double>& centres) {
             for (int b = 0; b < ny; ++b) {
                 double x = -(-kHalfX + 2 * kHalfX * (i + (a + 0.5) / nx) / kWidth);
                 double y = -kHalfY + 2 * kHalfY * (b + 0.5) / ny;
-                for (double cx : centres) sum += plane_radiance(x, y, cx);
+                for (std::size_t k = 0; k < centres.size(); ++k)
+                    sum += plane_radiance(x, y, centres[k], radii.empty() ? kRadius : radii[k]);
             }
         img.at(i, 0) = Color3(float(sum / (nx * ny * double(centres.size()))));
     }
@@ -158,7 +159,8 @@ TEST(MovingAreaLight, EveryIntegratorSeesTheTimeAverage) {
 // (light sampling on the triangles' start pose carried by R(t), BSDF samples finding the moving triangles,
 // MIS between them), light tracing and BDPT estimate the same integral, so they agree within their noise.
 // Mirrored, the emitting side must stay the same for the sampled start pose and the traced shape.
-void expect_integrators_agree_on_turning_square(const std::string& mirror) {
+void expect_integrators_agree_on_turning_square(const std::string& mirror,
+                                                const std::string& end_scale = "") {
     const std::string text = scene_around(fmt::format(R"(AttributeBegin
   Material "diffuse" "rgb reflectance" [0 0 0]
   AreaLightSource "diffuse" "rgb L" [10 10 10]
@@ -167,12 +169,13 @@ void expect_integrators_agree_on_turning_square(const std::string& mirror) {
   ActiveTransform EndTime
   Translate 1.5 1 1
   Rotate 60 1 0 0
+  {1}
   ActiveTransform All
-  {}
+  {0}
   Shape "trianglemesh" "point3 P" [-0.15 -0.15 0  -0.15 0.15 0  0.15 0.15 0  0.15 -0.15 0]
     "integer indices" [0 1 2 0 2 3]
 AttributeEnd)",
-                                                      mirror));
+                                                      mirror, end_scale));
     auto scene = build_scene(parse_pbrt_string(text, "<test>", "."));
     EXPECT_TRUE(scene->warnings.empty()) << scene->warnings.front();
     EXPECT_EQ(scene->lights.size(), 2u); // one per triangle
@@ -188,8 +191,8 @@ AttributeEnd)",
     for (auto [integrator, spp] : {std::pair<const char*, int>{"lightpath", 16384}, {"bdpt", 1024}}) {
         double s = 0;
         double m = mean_of(integrator, spp, &s);
-        std::printf("%s %-9s mean %.6f +- %.6f (path %.6f +- %.6f)\n", mirror.c_str(), integrator, m, s, path,
-                    s_path);
+        std::printf("%s%s %-9s mean %.6f +- %.6f (path %.6f +- %.6f)\n", mirror.c_str(), end_scale.c_str(),
+                    integrator, m, s, path, s_path);
         EXPECT_NEAR(m, path, 4 * std::sqrt(s * s + s_path * s_path)) << integrator;
     }
 }
@@ -202,13 +205,47 @@ TEST(MovingAreaLight, AMirroredTurningMeshEmitterIsSeenAlikeByEveryIntegrator) {
     expect_integrators_agree_on_turning_square("Scale -1 1 1");
 }
 
-// A motion that changes the light's scale is approximated (its densities are its start pose's): warned, at
-// the shape.
-TEST(MovingAreaLight, AScalingMotionWarns) {
+// A motion that changes the light's size is exact too: the sphere moving as above while its radius grows
+// linearly from r to 2r (pbrt-v4 interpolates the scale factor linearly; so does Embree here), against the
+// closed form averaged over the motion, with the densities carried by the Jacobians of R(t).
+TEST(MovingAreaLight, AGrowingSphereIsTheTimeAverage) {
+    const std::string text =
+        scene_with(fmt::format("ActiveTransform StartTime\n  Translate {0} {2} {3}\n  "
+                               "ActiveTransform EndTime\n  Translate {1} {2} {3}\n  Scale 2 "
+                               "2 2\n  ActiveTransform All",
+                               kFromX, kToX, kCentreY, kCentreZ));
+    auto scene = build_scene(parse_pbrt_string(text, "<test>", "."));
+    EXPECT_TRUE(scene->warnings.empty()) << scene->warnings.front();
+    std::vector<double> centres = moving_centres(), radii;
+    for (std::size_t k = 0; k < centres.size(); ++k)
+        radii.push_back(kRadius * (1 + (k + 0.5) / double(centres.size())));
+    const Image ref = closed_form(centres, radii);
+    double sigma = expect_matches(text, ref, "path", 1024);
+    // The sphere's size at the start (as if the densities were the start pose's) is many σ away.
+    EXPECT_GT(std::abs(test::pixel_mean(closed_form(centres), 1).mean - test::pixel_mean(ref, 1).mean),
+              20 * sigma);
+    expect_matches(text, ref, "lightpath", 16384);
+    expect_matches(text, ref, "bdpt", 1024);
+}
+
+// A square stretched to twice its width along x while it moves and turns: no closed form, the integrators
+// agree (light tracing's photons carry the area and direction Jacobians, the path tracer's light samples the
+// solid-angle one).
+TEST(MovingAreaLight, AStretchingMeshEmitterIsSeenAlikeByEveryIntegrator) {
+    expect_integrators_agree_on_turning_square("", "Scale 2 1 1");
+}
+
+// "power" sets the radiance from the area, which a motion that changes the size changes: the start pose's is
+// used, with a warning at the shape.
+TEST(MovingAreaLight, PowerOfAResizingLightWarns) {
     std::string text = scene_with("ActiveTransform EndTime\n  Scale 2 2 2\n  ActiveTransform All");
     auto scene = build_scene(parse_pbrt_string(text, "<test>", "."));
+    EXPECT_TRUE(scene->warnings.empty()) << scene->warnings.front();
+    std::string with_power = text;
+    with_power.replace(with_power.find("\"rgb L\""), 0, "\"float power\" [3] ");
+    scene = build_scene(parse_pbrt_string(with_power, "<test>", "."));
     ASSERT_EQ(scene->warnings.size(), 1u);
-    EXPECT_NE(scene->warnings[0].find("<test>:17:3: a moving area light whose motion changes its scale"),
+    EXPECT_NE(scene->warnings[0].find("<test>:17:3: a moving area light whose motion changes its size"),
               std::string::npos)
         << scene->warnings[0];
 }

@@ -7,10 +7,12 @@
 // normals and directions to the start pose by R(t)⁻¹, asks the still light there and maps the answer back by
 // R(t) (the time: the receiver's, the hit's or the photon ray's).
 //
-// When R(t) is rigid (a rotation and a translation: the motion keeps its scale), distances, angles and
-// areas are unchanged by it, so the still light's densities (per steradian and per unit area), radiance and
-// power are those of the moving one. A motion that changes the scale is handled the same way and is only
-// approximate (the densities are those of the start pose's shape); the scene build warns about it.
+// R(t) is affine, A its linear part. Radiance is carried unchanged (A w and A⁻ᵀ n keep the sign of w · n);
+// densities are carried by the Jacobians of the maps (1 for a rigid R(t): a motion that keeps its scale):
+// per unit area divided by |det A| |A⁻ᵀ n0| (Nanson's formula, n0 the unit normal at the start pose), per
+// steradian of a photon's direction w0 divided by |det A| / |A w0|³, and per steradian at a receiver through
+// the density per unit area (p_A = p_ω |cos θ| / r²). So a motion that changes the light's size is exact
+// too; only power(), which picks lights for sampling, stays that of the start pose.
 #pragma once
 
 #include <memory>

@@ -274,16 +274,17 @@ private:
         if (emitter.next != emitter.start_shapes.size())
             diag_.unsupported(s.loc, "a moving area light's shape differs between its start pose and its "
                                      "object space: some of its parts do not emit");
-        // R(t) = M(t) M0⁻¹ is rigid when the decomposed scale is the same at both ends of the motion.
+        // R(t) = M(t) M0⁻¹ keeps areas when the decomposed scale is the same at both ends of the motion;
+        // otherwise the light is still exact (MovingAreaLight carries its densities through R(t)), but
+        // "power" sets its radiance by its area at the start pose.
         const Matrix3d s0 = decompose(motion.start().matrix()).scale,
                        s1 = decompose(motion.end().matrix()).scale;
         double scale = 0, change = 0;
         for (int i = 0; i < 9; ++i)
             scale = std::max(scale, std::abs(s0[i])), change = std::max(change, std::abs(s1[i] - s0[i]));
-        if (change > 1e-5 * scale)
-            diag_.unsupported(s.loc,
-                              "a moving area light whose motion changes its scale is approximated: its "
-                              "sampling densities, radiance and power are those of its start pose");
+        if (change > 1e-5 * scale && desc_.area_lights.at(s.area_light).params.has("power"))
+            diag_.unsupported(s.loc, "a moving area light whose motion changes its size: its \"power\" sets "
+                                     "its radiance by its area at the start of the motion");
         return true;
     }
 
