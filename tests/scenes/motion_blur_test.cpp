@@ -326,17 +326,19 @@ ObjectInstance "ball"
 }
 
 TEST(MotionBlur, UnsupportedCasesWarnAtTheirPosition) {
-    // pbrt-v4 rejects moving area lights; here the emitter stays at its start transform, with a warning.
+    // pbrt-v4 rejects moving area lights; illum moves them, and warns when "power" sets the radiance of one
+    // whose size changes (from its start pose's area: tests/scenes/moving_area_light_test.cpp).
     std::string text = options(kStillCamera) + R"(AttributeBegin
 ActiveTransform EndTime
-Translate 1 0 0
-AreaLightSource "diffuse"
+Scale 2 1 1
+AreaLightSource "diffuse" "float power" [2]
 Shape "sphere"
 AttributeEnd
 )";
     auto scene = build_scene(parse_pbrt_string(text, "<test>", "."));
     ASSERT_EQ(scene->warnings.size(), 1u);
-    EXPECT_NE(scene->warnings[0].find("<test>:14:1: a moving area light"), std::string::npos)
+    EXPECT_NE(scene->warnings[0].find("<test>:14:1: a moving area light whose motion changes its size"),
+              std::string::npos)
         << scene->warnings[0];
 }
 

@@ -347,12 +347,27 @@ void Accelerator::place_moving(std::uint32_t prototype, const std::vector<Transf
     building_ = saved;
 }
 
-void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTransform& world_from_instance) {
-    if (prototypes_.at(prototype)->records.empty()) return;
+std::uint32_t Accelerator::add_moving_instance(std::uint32_t prototype,
+                                               const AnimatedTransform& world_from_instance) {
+    if (prototypes_.at(prototype)->records.empty()) return kNoInstance;
     place_moving(
         prototype, motion_steps(world_from_instance, shutter_open_, shutter_close_),
         [&](double t) { return world_from_instance.interpolate(t); }, world_from_instance.start_time(),
         world_from_instance.end_time());
+    return std::uint32_t(records_.size() - 1);
+}
+
+std::optional<Transform> Accelerator::moving_transform(std::uint32_t instance, float time) const {
+    const Record& inst = records_.at(instance);
+    if (!inst.moving) return inst.world_from_instance;
+    float xfm[12];
+    rtcGetGeometryTransform(inst.moving, embree_time(time), RTC_FORMAT_FLOAT3X4_ROW_MAJOR, xfm);
+    Matrix4 m = Matrix4::identity();
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) m(r, c) = xfm[4 * r + c];
+    auto inv = inverse(m);
+    if (!inv) return std::nullopt;
+    return Transform(m, *inv);
 }
 
 void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTransform& outer,

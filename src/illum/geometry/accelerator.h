@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <embree3/rtcore.h>
@@ -68,7 +69,13 @@ public:
     // Motion blur: the prototype placed by a moving transform, an Embree instance with motion time steps
     // (motion_steps.h). Call set_shutter() first. A moving shape is a prototype of its own placed so, as
     // pbrt-v4 places it (AnimatedPrimitive: the shape in object space, the ray carried there at its time).
-    void add_moving_instance(std::uint32_t prototype, const AnimatedTransform& world_from_instance);
+    // Returns the instance's id for moving_transform() (kNoInstance when the prototype is empty).
+    std::uint32_t add_moving_instance(std::uint32_t prototype, const AnimatedTransform& world_from_instance);
+    static constexpr std::uint32_t kNoInstance = ~std::uint32_t(0);
+    // The transform a moving instance's hits at this time are carried to the world by (Embree's
+    // interpolation of its steps, as complete() uses it), so what is sampled on a moving emitter lies on the
+    // surface rays find; nullopt where it is singular (a scale passing through zero).
+    std::optional<Transform> moving_transform(std::uint32_t instance, float time) const;
     // The prototype placed by outer(t) · inner(t): a moving shape of an object definition (its own
     // prototype, moved by `inner`) in an object instance (`outer`, still or moving). Embree instances one
     // level deep, so each use of the definition places its moving shapes itself (motion_steps.h).

@@ -25,15 +25,17 @@ enum class LightType : std::uint8_t {
 };
 inline bool is_delta(LightType t) { return t == LightType::DeltaPosition || t == LightType::DeltaDirection; }
 
-// The receiving point.
+// The receiving point, at the path's time (a moving light is sampled where it is then).
 struct LightSampleContext {
     Point3f p;
     Vector3f p_error;
     Normal3f n; // geometric normal; zero when not on a surface
+    float time = 0;
 
     LightSampleContext() = default;
-    LightSampleContext(Point3f p_, Vector3f err, Normal3f n_) : p(p_), p_error(err), n(n_) {}
-    explicit LightSampleContext(const SurfaceHit& h) : p(h.p), p_error(h.p_error), n(h.n) {}
+    LightSampleContext(Point3f p_, Vector3f err, Normal3f n_, float time_ = 0)
+        : p(p_), p_error(err), n(n_), time(time_) {}
+    explicit LightSampleContext(const SurfaceHit& h) : p(h.p), p_error(h.p_error), n(h.n), time(h.time) {}
 };
 
 struct LightLiSample {
@@ -78,7 +80,7 @@ public:
     virtual std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Point2f u,
                                                    const SampledWavelengths& lambda) const = 0;
     // Density (per steradian at ctx) with which sample_li returns direction wi; for area lights `hit` is
-    // where the ray along wi met the light.
+    // where the ray along wi met the light (at the ray's time, ctx's).
     virtual SolidAnglePdf pdf_li(const LightSampleContext& ctx, Vector3f wi, const SurfaceHit* hit) const = 0;
     // Radiance leaving the light's surface at hit towards w (area lights).
     virtual Radiance3 radiance(const SurfaceHit&, Vector3f, const SampledWavelengths&) const { return {}; }
@@ -99,12 +101,21 @@ public:
     // light emits nothing there. Infinite and directional lights need preprocess() first.
     virtual std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
                                                    const SampledWavelengths& lambda) const = 0;
+    // The same at the path's time (motion blur), which the photon's ray carries: a moving light emits from
+    // where it is then; the still ones emit as sample_le() does.
+    virtual std::optional<LightLeSample> sample_le_at(float time, Point2f u1, Point2f u2,
+                                                      const SampledWavelengths& lambda) const {
+        std::optional<LightLeSample> s = sample_le(u1, u2, lambda);
+        if (s) s->ray.time = time;
+        return s;
+    }
     // The densities with which sample_le() would emit `ray` (origin on the light, unit direction of
     // travel; n: the emitter's normal at the origin, zero for points and infinite lights), in sample_le's
     // conventions: *pos per unit area (1 as a probability for a delta position; for infinite and
     // directional lights the disk density 1 / (π r²), whatever the origin), *dir per steradian (1 as a
     // probability for a delta direction that the ray follows, 0 for any other). Bidirectional methods
-    // weigh their strategies with it (PBR 4th ed. §16.3, Light::PDF_Le; Veach 1997 §10.2).
+    // weigh their strategies with it (PBR 4th ed. §16.3, Light::PDF_Le; Veach 1997 §10.2). The ray's time
+    // is the path's (a moving light's densities are those of its pose then).
     virtual void pdf_le(const Ray& ray, Normal3f n, AreaPdf* pos, SolidAnglePdf* dir) const = 0;
 
     // Position in the scene's light list, set by the scene (for selection pmfs).

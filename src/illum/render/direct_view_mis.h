@@ -13,7 +13,7 @@
 namespace illum {
 
 inline float direct_view_weight(const Scene& scene, const Light& light, Point3f y, Normal3f n_y,
-                                Point3f p_lens, bool for_camera) {
+                                Point3f p_lens, float time, bool for_camera) {
     Vector3f d = y - p_lens;
     float r2 = length_squared(d);
     if (!(r2 > 0)) return for_camera ? 1.0f : 0.0f;
@@ -21,6 +21,7 @@ inline float direct_view_weight(const Scene& scene, const Light& light, Point3f 
     SurfaceHit at_y;
     at_y.p = y;
     at_y.n = n_y;
+    at_y.time = time; // a moving light's density is that of its pose then
     float p_camera = scene.camera->pdf_we(Ray{p_lens, w}).dir.value * std::abs(dot(w, n_y)) / r2;
     float p_light = scene.light_sampler.pmf(&light) * light.pdf_le_position(at_y).value;
     // A film position outside the film: light tracing cannot splat there, so the camera ray counts alone.

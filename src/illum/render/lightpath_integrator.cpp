@@ -66,9 +66,10 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
     // Caustics only: the environment's caustics stay with the camera paths (their light end is not traced).
     if (caustics_only_ && light->type() == LightType::Infinite) return dropped;
     Point2f u_pos = sampler.get_2d(), u_dir = sampler.get_2d();
-    std::optional<LightLeSample> les = light->sample_le(u_pos, u_dir, tc.lambda);
-    // Motion blur: the particle's time, drawn in the shutter interval as a camera sample's is.
+    // Motion blur: the particle's time, drawn in the shutter interval as a camera sample's is (a moving
+    // light emits it from where it is then).
     const float time = scene_.has_motion ? scene_.sample_time(sampler.get_1d()) : 0.0f;
+    std::optional<LightLeSample> les = light->sample_le_at(time, u_pos, u_dir, tc.lambda);
     if (!les || !(les->pdf_pos.value > 0) || !(les->pdf_dir.value > 0) || les->flux.is_black())
         return dropped;
     // Media: collisions are sampled in one channel, chosen per particle, and every splat is divided by the
@@ -108,6 +109,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
             y.p = les->p_surface;
             y.n = les->n;
             y.ns = les->n;
+            y.time = time;
             Radiance3 le = light->radiance(y, cs->wi, tc.lambda);
             float cos_y = std::abs(dot(Vector3f(les->n), cs->wi));
             if (!le.is_black() && cos_y > 0) {
@@ -116,7 +118,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
                 Point3f o = offset_ray_origin(les->p_surface, les->p_error, les->n, cs->wi);
                 // Beside volpath, weighed against its camera rays that hit the light (direct_view_mis.h).
                 float w = caustics_only_
-                              ? direct_view_weight(scene_, *light, les->p_surface, les->n, cs->p_lens,
+                              ? direct_view_weight(scene_, *light, les->p_surface, les->n, cs->p_lens, time,
                                                    /*for_camera=*/false)
                               : 1.0f;
                 connect(nullptr, o, light->medium_towards(cs->wi, les->n), *cs,

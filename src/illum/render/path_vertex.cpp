@@ -76,7 +76,7 @@ float pdf_light(const PathContext& ctx, const PathVertex& v, const PathVertex& n
         if (!light) return 0;
         AreaPdf pos;
         SolidAnglePdf dir;
-        light->pdf_le(Ray{v.p, w}, v.ng, &pos, &dir);
+        light->pdf_le(Ray{v.p, w, kInfinity, ctx.time}, v.ng, &pos, &dir);
         pdf = dir.value * inv_d2;
     }
     if (next.on_surface()) pdf *= std::abs(dot(Vector3f(next.ng), w));
@@ -93,7 +93,7 @@ float pdf_light_origin(const PathContext& ctx, const PathVertex& v, const PathVe
     if (!light) return 0;
     AreaPdf pos;
     SolidAnglePdf dir;
-    light->pdf_le(Ray{v.p, w}, v.ng, &pos, &dir);
+    light->pdf_le(Ray{v.p, w, kInfinity, ctx.time}, v.ng, &pos, &dir);
     return ctx.scene.light_sampler.pmf(light) * pos.value;
 }
 
@@ -350,8 +350,8 @@ bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u
     float pmf = 0;
     const Light* light = ctx.scene.light_sampler.sample(u_light, &pmf);
     if (!light || !(pmf > 0)) return false;
-    LightSampleContext lc =
-        pt.type == VertexType::Surface ? LightSampleContext(pt.hit) : LightSampleContext(pt.p, {}, {});
+    LightSampleContext lc = pt.type == VertexType::Surface ? LightSampleContext(pt.hit)
+                                                           : LightSampleContext(pt.p, {}, {}, ctx.time);
     std::optional<LightLiSample> ls = light->sample_li(lc, u, ctx.tc.lambda);
     if (!ls || ls->biradiance.s.is_black() || !(ls->pdf.value > 0)) return false;
     sampled->type = VertexType::Light;
@@ -378,7 +378,7 @@ int trace_light_subpath(const PathContext& ctx, float u_light, Point2f u_pos, Po
     float pmf = 0;
     const Light* light = ctx.scene.light_sampler.sample(u_light, &pmf);
     std::optional<LightLeSample> les;
-    if (light && pmf > 0) les = light->sample_le(u_pos, u_dir, ctx.tc.lambda);
+    if (light && pmf > 0) les = light->sample_le_at(ctx.time, u_pos, u_dir, ctx.tc.lambda);
     if (!les || !(les->pdf_pos.value > 0) || !(les->pdf_dir.value > 0) || les->flux.is_black()) return 0;
     PathVertex& l0 = path[0];
     l0 = PathVertex{};

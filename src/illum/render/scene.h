@@ -121,6 +121,9 @@ public:
     std::vector<std::unique_ptr<ColorTexture>> color_textures;
     std::vector<std::unique_ptr<FloatTexture>> float_textures;
     std::vector<std::unique_ptr<AreaShape>> light_shapes;
+    // A moving emitter's geometry at its start pose, which its lights sample (moving_area_light.h).
+    std::vector<std::unique_ptr<TriangleMesh>> light_meshes;
+    std::vector<std::unique_ptr<BilinearPatchMesh>> light_patches;
     std::vector<std::unique_ptr<Medium>> media;
     std::deque<MediumInterface> medium_interfaces; // stable addresses: hits point at them
 

@@ -30,7 +30,7 @@ SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path
     Sampler& sampler = tc.sampler;
     float u_light = sampler.get_1d();
     Point2f u_li = sampler.get_2d();
-    LightSampleContext ctx = v.hit ? LightSampleContext(*v.hit) : LightSampleContext(v.p, {}, {});
+    LightSampleContext ctx = v.hit ? LightSampleContext(*v.hit) : LightSampleContext(v.p, {}, {}, path.time);
     float pmf = 0;
     const Light* light = scene_.light_sampler.sample(u_light, &pmf);
     if (!light || pmf <= 0) return {};
@@ -114,7 +114,8 @@ SampledSpectrum VolPathIntegrator::sample_equiangular(Segment& seg, const Medium
     const MediumProperties mp =
         path.media.get(medium, tc.lambda); // a copy: the shadow ray may refill the cache
     if (mp.sigma_s.is_black()) return {};
-    std::optional<LightLiSample> ls = light->sample_li(LightSampleContext(x, {}, {}), u_li, tc.lambda);
+    std::optional<LightLiSample> ls =
+        light->sample_li(LightSampleContext(x, {}, {}, path.time), u_li, tc.lambda);
     if (!ls || ls->biradiance.s.is_black()) return {};
     SampledSpectrum t_cam = exp(-(mp.sigma_a + mp.sigma_s) * t); // exact: the medium is homogeneous
     SampledSpectrum p_free_flight = mp.sigma_s * t_cam;
@@ -172,7 +173,8 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
             return;
         if (depth == 0 && caustics_by_light_tracing_ && hit && split()) {
             // A light seen directly: weighed against light tracing's view of it (volpath_caustics.h).
-            float w = direct_view_weight(scene_, *light, hit->p, hit->n, camera_ray.o, /*for_camera=*/true);
+            float w = direct_view_weight(scene_, *light, hit->p, hit->n, camera_ray.o, hit->time,
+                                         /*for_camera=*/true);
             l += beta * le * (w / r_u.average());
         } else if (depth == 0 || specular_bounce) {
             l += beta * le / r_u.average();
@@ -251,7 +253,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
                         }
                         // β *= p / pdf = 1 for the exactly sampled Henyey-Greenstein.
                         r_l = r_u / phase_pdf;
-                        prev_ctx = LightSampleContext(p, {}, {});
+                        prev_ctx = LightSampleContext(p, {}, {}, ray.time);
                         ray = Ray{p, wi, kInfinity, ray.time, medium};
                         rd.valid = false;
                         specular_bounce = false;

@@ -16,6 +16,7 @@
 #include "illum/light/area_emission.h"
 #include "illum/light/diffuse_area_light.h"
 #include "illum/light/light_factory.h"
+#include "illum/light/moving_area_light.h"
 #include "illum/medium/create_medium.h"
 #include "illum/medium/homogeneous_medium.h"
 #include "illum/render/create_render_request.h"
@@ -216,18 +217,94 @@ private:
     }
 
     // A moving shape (pbrt-v4's animated shape): built in object space as a prototype of its own and
-    // placed by its moving transform, as pbrt-v4's AnimatedPrimitive does. Emitters stay at their start
-    // transform (pbrt-v4 rejects moving area lights).
+    // placed by its moving transform, as pbrt-v4's AnimatedPrimitive does.
     bool add_moving_shape(const ShapeDesc& s) {
-        if (s.area_light >= 0) {
-            diag_.unsupported(s.loc,
-                              "a moving area light is not supported (pbrt-v4 rejects it too): it emits "
-                              "from its start transform, still");
-            return false;
-        }
+        if (s.area_light >= 0) return add_moving_emitter(s);
         scene_->accelerator.add_moving_instance(moving_prototype(s), motion_of(s));
         scene_->has_motion = true;
         return true;
+    }
+
+    // A moving emitter (pbrt-v4 rejects it): traced as any moving shape, its lights (MovingAreaLight) sample
+    // its shape at the start pose, built here too, and carry the samples to where the traced shape is at
+    // their time.
+    struct MovingEmitter {
+        std::vector<const AreaShape*> start_shapes; // in the order add_shape makes the primitives' lights
+        std::size_t next = 0;
+        Transform start_from_object;
+        float start_time = 0;
+        std::vector<MovingAreaLight*> lights;
+    };
+    MovingEmitter* moving_emitter_ = nullptr; // while a moving emitter's prototype is built
+
+    bool add_moving_emitter(const ShapeDesc& s) {
+        ShapeDesc start = s;
+        start.motion = {};
+        std::optional<ShapeGeometry> g =
+            create_shape(start, textures_, scene_->request.displacement_edge_scale);
+        if (!g) return true; // removed (alpha 0) or reported
+        MovingEmitter emitter;
+        emitter.start_from_object = s.world_from_object;
+        emitter.start_time = s.motion.start_time;
+        if (g->mesh) {
+            for (std::uint32_t t = 0; t < g->mesh->triangle_count(); ++t) {
+                scene_->light_shapes.push_back(std::make_unique<TriangleShape>(g->mesh.get(), t));
+                emitter.start_shapes.push_back(scene_->light_shapes.back().get());
+            }
+            scene_->light_meshes.push_back(std::move(g->mesh));
+        }
+        if (g->patches) {
+            for (std::uint32_t i = 0; i < g->patches->patch_count(); ++i) {
+                scene_->light_shapes.push_back(std::make_unique<BilinearPatchShape>(g->patches.get(), i));
+                emitter.start_shapes.push_back(scene_->light_shapes.back().get());
+            }
+            scene_->light_patches.push_back(std::move(g->patches));
+        }
+        if (g->analytic) {
+            emitter.start_shapes.push_back(g->analytic.get());
+            scene_->light_shapes.push_back(std::move(g->analytic));
+        }
+        moving_emitter_ = &emitter;
+        std::uint32_t prototype = moving_prototype(s);
+        moving_emitter_ = nullptr;
+        const AnimatedTransform motion = motion_of(s);
+        std::uint32_t instance = scene_->accelerator.add_moving_instance(prototype, motion);
+        for (MovingAreaLight* l : emitter.lights) l->set_motion(&scene_->accelerator, instance);
+        scene_->has_motion = true;
+        if (emitter.next != emitter.start_shapes.size())
+            diag_.unsupported(s.loc, "a moving area light's shape differs between its start pose and its "
+                                     "object space: some of its parts do not emit");
+        // R(t) = M(t) M0⁻¹ keeps areas when the decomposed scale is the same at both ends of the motion;
+        // otherwise the light is still exact (MovingAreaLight carries its densities through R(t)), but
+        // "power" sets its radiance by its area at the start pose.
+        const Matrix3d s0 = decompose(motion.start().matrix()).scale,
+                       s1 = decompose(motion.end().matrix()).scale;
+        double scale = 0, change = 0;
+        for (int i = 0; i < 9; ++i)
+            scale = std::max(scale, std::abs(s0[i])), change = std::max(change, std::abs(s1[i] - s0[i]));
+        if (change > 1e-5 * scale && desc_.area_lights.at(s.area_light).params.has("power"))
+            diag_.unsupported(s.loc, "a moving area light whose motion changes its size: its \"power\" sets "
+                                     "its radiance by its area at the start of the motion");
+        return true;
+    }
+
+    // An emitting primitive's light (shape: the primitive where it is traced): a still light, or while a
+    // moving emitter is built, the moving light over the primitive's start-pose shape.
+    std::unique_ptr<Light> make_emitter(const AreaEmission& e, const AreaShape* shape, float area,
+                                        const FloatTexture* alpha) {
+        if (!moving_emitter_) {
+            auto l = e.make_light(shape, area);
+            l->set_alpha(alpha);
+            return l;
+        }
+        MovingEmitter& m = *moving_emitter_;
+        if (m.next >= m.start_shapes.size()) return nullptr;
+        const AreaShape* start = m.start_shapes[m.next++];
+        auto still = e.make_light(start, start->area());
+        still->set_alpha(alpha);
+        auto l = std::make_unique<MovingAreaLight>(std::move(still), m.start_from_object, m.start_time);
+        m.lights.push_back(l.get());
+        return l;
     }
 
     static AnimatedTransform motion_of(const ShapeDesc& s) {
@@ -275,8 +352,12 @@ private:
             if (e) {
                 for (std::uint32_t t = 0; t < g->mesh->triangle_count(); ++t) {
                     scene_->light_shapes.push_back(std::make_unique<TriangleShape>(g->mesh.get(), t));
-                    auto light = e->make_light(scene_->light_shapes.back().get(), g->mesh->triangle_area(t));
-                    light->set_alpha(g->alpha);
+                    auto light = make_emitter(*e, scene_->light_shapes.back().get(),
+                                              g->mesh->triangle_area(t), g->alpha);
+                    if (!light) {
+                        tri_lights.push_back(nullptr);
+                        continue;
+                    }
                     set_light_media(*light, s, mi);
                     tri_lights.push_back(light.get());
                     scene_->lights.push_back(std::move(light));
@@ -290,8 +371,11 @@ private:
             for (std::uint32_t i = 0; e && i < g->patches->patch_count(); ++i) {
                 scene_->light_shapes.push_back(std::make_unique<BilinearPatchShape>(g->patches.get(), i));
                 const AreaShape* shape = scene_->light_shapes.back().get();
-                auto light = e->make_light(shape, shape->area());
-                light->set_alpha(g->alpha);
+                auto light = make_emitter(*e, shape, shape->area(), g->alpha);
+                if (!light) {
+                    patch_lights.push_back(nullptr);
+                    continue;
+                }
                 set_light_media(*light, s, mi);
                 patch_lights.push_back(light.get());
                 scene_->lights.push_back(std::move(light));
@@ -302,11 +386,11 @@ private:
         }
         const Light* light = nullptr;
         if (e) {
-            auto l = e->make_light(g->analytic.get(), g->analytic->area());
-            l->set_alpha(g->alpha);
-            set_light_media(*l, s, mi);
-            light = l.get();
-            scene_->lights.push_back(std::move(l));
+            if (auto l = make_emitter(*e, g->analytic.get(), g->analytic->area(), g->alpha)) {
+                set_light_media(*l, s, mi);
+                light = l.get();
+                scene_->lights.push_back(std::move(l));
+            }
         }
         scene_->accelerator.add_shape(std::move(g->analytic), material, light, false, mi);
     }
