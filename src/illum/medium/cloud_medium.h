@@ -12,11 +12,11 @@
 #include "illum/medium/medium.h"
 #include "illum/medium/medium_box.h"
 #include "illum/medium/medium_spectrum.h"
+#include "illum/texture/noise.h"
 
 namespace illum {
 
-// pbrt-v4's Noise(p) and DNoise(p).
-float perlin_noise(Point3f p);
+// pbrt-v4's DNoise(p): the gradient of Noise (perlin_noise, texture/noise.h) by forward differences.
 Vector3f perlin_noise_gradient(Point3f p);
 
 struct CloudParams {

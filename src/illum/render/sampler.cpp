@@ -59,10 +59,16 @@ namespace sampling_detail {
 namespace {
 
 // table[b][k] = XOR of the direction numbers v_{8b + j} over the set bits j of the byte k.
-constexpr std::array<std::array<uint32_t, 256>, 4> make_sobol_dim1_tables() {
+// Dimension 1's direction numbers: v_0 = 2^31, v_i = v_{i-1} ^ (v_{i-1} >> 1).
+constexpr std::array<uint32_t, 32> sobol_dim1_directions() {
     std::array<uint32_t, 32> v{};
     v[0] = 1u << 31;
     for (int i = 1; i < 32; ++i) v[i] = v[i - 1] ^ (v[i - 1] >> 1);
+    return v;
+}
+
+constexpr std::array<std::array<uint32_t, 256>, 4> make_sobol_dim1_tables() {
+    constexpr std::array<uint32_t, 32> v = sobol_dim1_directions();
     std::array<std::array<uint32_t, 256>, 4> t{};
     for (int b = 0; b < 4; ++b)
         for (int k = 0; k < 256; ++k) {
@@ -84,9 +90,7 @@ constexpr uint32_t reverse_bits_constexpr(uint32_t v) {
 
 // Bit j of byte b of reverse(i) is bit 31 - 8b - j of i, which contributes v_{31-8b-j}; reversed.
 constexpr std::array<std::array<uint32_t, 256>, 4> make_sobol_dim1_reversed_tables() {
-    std::array<uint32_t, 32> v{};
-    v[0] = 1u << 31;
-    for (int i = 1; i < 32; ++i) v[i] = v[i - 1] ^ (v[i - 1] >> 1);
+    constexpr std::array<uint32_t, 32> v = sobol_dim1_directions();
     std::array<std::array<uint32_t, 256>, 4> t{};
     for (int b = 0; b < 4; ++b)
         for (int k = 0; k < 256; ++k) {

@@ -46,6 +46,7 @@ float perlin_noise(float x, float y, float z) {
     x = std::fmod(x, float(1 << 30));
     y = std::fmod(y, float(1 << 30));
     z = std::fmod(z, float(1 << 30));
+    if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z))) return 0; // (int of NaN is undefined)
     const int ix = int(std::floor(x)), iy = int(std::floor(y)), iz = int(std::floor(z));
     const float dx = x - float(ix), dy = y - float(iy), dz = z - float(iz);
     const int x0 = ix & 255, y0 = iy & 255, z0 = iz & 255;

@@ -14,7 +14,8 @@ namespace illum {
 // p scaled about the origin (texture space is where these textures live).
 inline Point3f scaled(Point3f p, float s) { return {p.x * s, p.y * s, p.z * s}; }
 
-// Noise in [-1, 1] (zero at lattice points). Coordinates are taken modulo 2^30, as pbrt-v4 does.
+// Noise in [-1, 1] (zero at lattice points). Coordinates are taken modulo 2^30, as pbrt-v4 does; a
+// non-finite point gives 0.
 float perlin_noise(float x, float y = 0.5f, float z = 0.5f);
 inline float perlin_noise(Point3f p) { return perlin_noise(p.x, p.y, p.z); }
 

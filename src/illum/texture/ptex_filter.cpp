@@ -310,28 +310,34 @@ public:
         if (right || left || top || bottom) {
             Kernel ka, kc;
             auto adjacent = [&](int e) { return f.adjacent_faces[std::size_t(e)] >= 0; };
+            // The part of an edge kernel ka beyond the top or bottom edge too: across the corner (through
+            // the corner reached over edge top_corner or bottom_corner) where there is a face there, else
+            // folded back by the border mode.
+            auto corners_of = [&](Kernel& ka, int top_corner, int bottom_corner) {
+                if (top) {
+                    if (adjacent(kTop)) {
+                        kc = ka;
+                        ka.v.split_high(kc.v);
+                        corner(kc, id, top_corner);
+                    } else {
+                        ka.v.merge_high(file_.v_border);
+                    }
+                }
+                if (bottom) {
+                    if (adjacent(kBottom)) {
+                        kc = ka;
+                        ka.v.split_low(kc.v);
+                        corner(kc, id, bottom_corner);
+                    } else {
+                        ka.v.merge_low(file_.v_border);
+                    }
+                }
+            };
             if (right) {
                 if (adjacent(kRight)) {
                     ka = k;
                     k.u.split_high(ka.u);
-                    if (top) {
-                        if (adjacent(kTop)) {
-                            kc = ka;
-                            ka.v.split_high(kc.v);
-                            corner(kc, id, kTop);
-                        } else {
-                            ka.v.merge_high(file_.v_border);
-                        }
-                    }
-                    if (bottom) {
-                        if (adjacent(kBottom)) {
-                            kc = ka;
-                            ka.v.split_low(kc.v);
-                            corner(kc, id, kRight);
-                        } else {
-                            ka.v.merge_low(file_.v_border);
-                        }
-                    }
+                    corners_of(ka, kTop, kRight);
                     across_edge(ka, id, kRight);
                 } else {
                     k.u.merge_high(file_.u_border);
@@ -341,24 +347,7 @@ public:
                 if (adjacent(kLeft)) {
                     ka = k;
                     k.u.split_low(ka.u);
-                    if (top) {
-                        if (adjacent(kTop)) {
-                            kc = ka;
-                            ka.v.split_high(kc.v);
-                            corner(kc, id, kLeft);
-                        } else {
-                            ka.v.merge_high(file_.v_border);
-                        }
-                    }
-                    if (bottom) {
-                        if (adjacent(kBottom)) {
-                            kc = ka;
-                            ka.v.split_low(kc.v);
-                            corner(kc, id, kBottom);
-                        } else {
-                            ka.v.merge_low(file_.v_border);
-                        }
-                    }
+                    corners_of(ka, kLeft, kBottom);
                     across_edge(ka, id, kLeft);
                 } else {
                     k.u.merge_low(file_.u_border);
