@@ -58,29 +58,13 @@ namespace sampling_detail {
 
 namespace {
 
-// table[b][k] = XOR of the direction numbers v_{8b + j} over the set bits j of the byte k.
 // Dimension 1's direction numbers: v_0 = 2^31, v_i = v_{i-1} ^ (v_{i-1} >> 1).
-constexpr std::array<uint32_t, 32> sobol_dim1_directions() {
+constexpr std::array<uint32_t, 32> kSobolDim1Directions = [] {
     std::array<uint32_t, 32> v{};
     v[0] = 1u << 31;
     for (int i = 1; i < 32; ++i) v[i] = v[i - 1] ^ (v[i - 1] >> 1);
     return v;
-}
-
-constexpr std::array<std::array<uint32_t, 256>, 4> make_sobol_dim1_tables() {
-    constexpr std::array<uint32_t, 32> v = sobol_dim1_directions();
-    std::array<std::array<uint32_t, 256>, 4> t{};
-    for (int b = 0; b < 4; ++b)
-        for (int k = 0; k < 256; ++k) {
-            uint32_t r = 0;
-            for (int j = 0; j < 8; ++j)
-                if (k & (1 << j)) r ^= v[8 * b + j];
-            t[b][k] = r;
-        }
-    return t;
-}
-
-constexpr auto kSobolDim1 = make_sobol_dim1_tables();
+}();
 
 constexpr uint32_t reverse_bits_constexpr(uint32_t v) {
     uint32_t r = 0;
@@ -88,21 +72,26 @@ constexpr uint32_t reverse_bits_constexpr(uint32_t v) {
     return r;
 }
 
-// Bit j of byte b of reverse(i) is bit 31 - 8b - j of i, which contributes v_{31-8b-j}; reversed.
-constexpr std::array<std::array<uint32_t, 256>, 4> make_sobol_dim1_reversed_tables() {
-    constexpr std::array<uint32_t, 32> v = sobol_dim1_directions();
+// A GF(2)-linear map of 32-bit words by byte: table[b][k] = XOR of column(8b + j) over the set bits j of
+// the byte k, column(i) being the image of bit i.
+template <class Column>
+constexpr std::array<std::array<uint32_t, 256>, 4> byte_tables(Column column) {
     std::array<std::array<uint32_t, 256>, 4> t{};
     for (int b = 0; b < 4; ++b)
         for (int k = 0; k < 256; ++k) {
             uint32_t r = 0;
             for (int j = 0; j < 8; ++j)
-                if (k & (1 << j)) r ^= reverse_bits_constexpr(v[31 - 8 * b - j]);
+                if (k & (1 << j)) r ^= column(8 * b + j);
             t[b][k] = r;
         }
     return t;
 }
 
-constexpr auto kSobolDim1Reversed = make_sobol_dim1_reversed_tables();
+// Bit i of the index contributes v_i.
+constexpr auto kSobolDim1 = byte_tables([](int i) { return kSobolDim1Directions[std::size_t(i)]; });
+// Bit i of reverse(index) is bit 31 - i of the index, which contributes v_{31-i}; the sum reversed.
+constexpr auto kSobolDim1Reversed =
+    byte_tables([](int i) { return reverse_bits_constexpr(kSobolDim1Directions[std::size_t(31 - i)]); });
 
 } // namespace
 
