@@ -13,17 +13,12 @@
 #include "illum/geometry/accelerator.h"
 #include "illum/geometry/curves.h"
 #include "illum/param/param_set.h"
+#include "param_support.h"
 
 namespace illum {
 namespace {
 
-Param floats(const std::string& name, std::vector<double> v, ParamType type = ParamType::Float) {
-    Param p;
-    p.name = name;
-    p.type = type;
-    p.numbers = std::move(v);
-    return p;
-}
+using test::floats;
 
 // A straight flat curve along x from -2 to 2 (one Bézier segment, control points evenly spaced so u is
 // linear in x: x = -2 + 4u), width 0.3, at z = 0.

@@ -10,17 +10,13 @@
 #include "illum/geometry/curves.h"
 #include "illum/param/param_set.h"
 #include "illum/util/error.h"
+#include "param_support.h"
 
 namespace illum {
 namespace {
 
-Param floats(const std::string& name, std::vector<double> v, ParamType type = ParamType::Float) {
-    Param p;
-    p.name = name;
-    p.type = type;
-    p.numbers = std::move(v);
-    return p;
-}
+using test::floats;
+
 Param text(const std::string& name, const std::string& value) {
     Param p;
     p.name = name;

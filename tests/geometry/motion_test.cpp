@@ -12,14 +12,21 @@
 namespace illum {
 namespace {
 
-// A unit sphere at the origin of its own prototype, placed by `motion`; shutter [0, 1].
-std::unique_ptr<Accelerator> moving_sphere(const AnimatedTransform& motion) {
+// An accelerator with shutter [0, 1] holding a prototype of a unit sphere at its origin; *proto is its id.
+std::unique_ptr<Accelerator> sphere_prototype(std::uint32_t* proto) {
     auto acc = std::make_unique<Accelerator>();
     acc->set_shutter(0, 1);
-    std::uint32_t proto = acc->begin_prototype();
+    *proto = acc->begin_prototype();
     acc->add_shape(std::make_unique<SphereShape>(Transform(), 1.0f, -1.0f, 1.0f, 2 * kPi, false), nullptr,
                    nullptr);
     acc->end_prototype();
+    return acc;
+}
+
+// A unit sphere at the origin of its own prototype, placed by `motion`; shutter [0, 1].
+std::unique_ptr<Accelerator> moving_sphere(const AnimatedTransform& motion) {
+    std::uint32_t proto;
+    auto acc = sphere_prototype(&proto);
     acc->add_moving_instance(proto, motion);
     acc->commit();
     return acc;
@@ -182,12 +189,8 @@ TEST(Motion, NestedMotionTakesManyStepsOtherwise) {
 TEST(Motion, MovingShapeInAMovingInstanceIsWhereBothSay) {
     // A unit sphere sliding along the instance's y, in an instance turned 90° about z (its y is the world's
     // -x) that itself slides along the world's y.
-    auto acc = std::make_unique<Accelerator>();
-    acc->set_shutter(0, 1);
-    std::uint32_t proto = acc->begin_prototype();
-    acc->add_shape(std::make_unique<SphereShape>(Transform(), 1.0f, -1.0f, 1.0f, 2 * kPi, false), nullptr,
-                   nullptr);
-    acc->end_prototype();
+    std::uint32_t proto;
+    auto acc = sphere_prototype(&proto);
     AnimatedTransform inner(Transform::translate({0, -3, 0}), 0, Transform::translate({0, 3, 0}), 1);
     AnimatedTransform outer(Transform::rotate(90, {0, 0, 1}), 0,
                             Transform::translate({0, 4, 0}) * Transform::rotate(90, {0, 0, 1}), 1);

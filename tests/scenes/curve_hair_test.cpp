@@ -20,6 +20,18 @@ Film "rgb" "integer xresolution" [64] "integer yresolution" [64]
 PixelFilter "box" "float xradius" [0.5] "float yradius" [0.5]
 )";
 
+// A scene of black curves in kView before a white sky builds without warnings, and its image mean is
+// 1 - area / 4 (the window is 2 x 2), within 4.5 of the pixels' standard errors.
+void expect_covered_area(const std::string& scene, double area, const std::string& what) {
+    auto scene_built = build(scene);
+    EXPECT_TRUE(scene_built->warnings.empty()) << scene_built->warnings.front();
+    test::RenderSetup s;
+    s.spp = 16;
+    auto r = test::render_pbrt(scene, s);
+    test::MeanEstimate m = test::pixel_mean(r.image, 1);
+    EXPECT_NEAR(m.mean, 1 - area / 4, 4.5 * m.standard_error + 1e-4) << what;
+}
+
 // A black flat curve of length 1.6 and width 0.2 (then widths 0.1 → 0.3) in front of a white sky: the image
 // mean is 1 - covered area / 4 (the window is 2 x 2), within the pixels' standard error.
 TEST(CurveScene, SilhouetteCoversTheCurvesArea) {
@@ -31,13 +43,7 @@ LightSource "infinite" "rgb L" [1 1 1]
 Material "diffuse" "rgb reflectance" [0 0 0]
 Shape "curve" "point3 P" [-0.8 0.1 0  -0.3 0.1 0  0.3 0.1 0  0.8 0.1 0] )" +
                             widths + "\n";
-        auto scene_built = build(scene);
-        EXPECT_TRUE(scene_built->warnings.empty()) << scene_built->warnings.front();
-        test::RenderSetup s;
-        s.spp = 16;
-        auto r = test::render_pbrt(scene, s);
-        test::MeanEstimate m = test::pixel_mean(r.image, 1);
-        EXPECT_NEAR(m.mean, 1 - 1.6 * 0.2 / 4, 4.5 * m.standard_error + 1e-4) << widths;
+        expect_covered_area(scene, 1.6 * 0.2, widths);
     }
 }
 
@@ -65,13 +71,7 @@ LightSource "infinite" "rgb L" [1 1 1]
 Material "diffuse" "rgb reflectance" [0 0 0]
 )" + c.texture + "\n" + curve +
                             c.alpha + "\n";
-        auto scene_built = build(scene);
-        EXPECT_TRUE(scene_built->warnings.empty()) << scene_built->warnings.front();
-        test::RenderSetup s;
-        s.spp = 16;
-        auto r = test::render_pbrt(scene, s);
-        test::MeanEstimate m = test::pixel_mean(r.image, 1);
-        EXPECT_NEAR(m.mean, 1 - c.area / 4, 4.5 * m.standard_error + 1e-4) << c.alpha;
+        expect_covered_area(scene, c.area, c.alpha);
     }
 }
 

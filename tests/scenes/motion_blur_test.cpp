@@ -37,19 +37,25 @@ Material "diffuse" "rgb reflectance" [0 0 0]
 
 const char* kStillCamera = "LookAt 0 0 -10  0 0 0  0 1 0";
 
+// A translation along x from `from` at the start time to `to` at the end time, then back to both.
+std::string translation_motion(double from, double to) {
+    return fmt::format(R"(ActiveTransform StartTime
+  Translate {} 0 0
+  ActiveTransform EndTime
+  Translate {} 0 0
+  ActiveTransform All)",
+                       from, to);
+}
+
+// The sphere of radius kRadius moving from `from` to `to`.
+std::string moving_sphere(double from, double to) {
+    return translation_motion(from, to) + fmt::format("\n  Shape \"sphere\" \"float radius\" [{}]", kRadius);
+}
+
 // The sphere moving from kFrom to kTo over TransformTimes 0 1 (the default).
 std::string moving_sphere_scene(const std::string& shutter = "") {
-    return options(kStillCamera, shutter) + fmt::format(R"(
-AttributeBegin
-  ActiveTransform StartTime
-  Translate {0} 0 0
-  ActiveTransform EndTime
-  Translate {1} 0 0
-  ActiveTransform All
-  Shape "sphere" "float radius" [{2}]
-AttributeEnd
-)",
-                                                        kFrom, kTo, kRadius);
+    return options(kStillCamera, shutter) + "\nAttributeBegin\n  " + moving_sphere(kFrom, kTo) +
+           "\nAttributeEnd\n";
 }
 
 Image render(const std::string& text, int spp, int threads = 0) {
@@ -130,18 +136,14 @@ TEST(MotionBlur, AMovingInstanceIsAMovingShape) {
     Image shape = render(moving_sphere_scene(), spp);
     Image instance = render(options(kStillCamera) + fmt::format(R"(
 ObjectBegin "ball"
-  Shape "sphere" "float radius" [{2}]
+  Shape "sphere" "float radius" [{}]
 ObjectEnd
 AttributeBegin
-  ActiveTransform StartTime
-  Translate {0} 0 0
-  ActiveTransform EndTime
-  Translate {1} 0 0
-  ActiveTransform All
+  {}
   ObjectInstance "ball"
 AttributeEnd
 )",
-                                                                kFrom, kTo, kRadius),
+                                                                kRadius, translation_motion(kFrom, kTo)),
                             spp);
     for (int i = 0; i < kPixels; ++i)
         EXPECT_NEAR(instance.at(i, 0).g, shape.at(i, 0).g, 2.0 / spp) << "pixel " << i;
@@ -265,30 +267,19 @@ TEST(MotionBlur, AMovingShapeInAnInstanceIsAMovingShape) {
     auto instance = [&](double from, double to, const std::string& use) {
         return options(kStillCamera) + fmt::format(R"(
 ObjectBegin "ball"
-  ActiveTransform StartTime
-  Translate {0} 0 0
-  ActiveTransform EndTime
-  Translate {1} 0 0
-  ActiveTransform All
-  Shape "sphere" "float radius" [{2}]
+  {}
 ObjectEnd
 AttributeBegin
-  {3}
+  {}
   ObjectInstance "ball"
 AttributeEnd
 )",
-                                                   from, to, kRadius, use);
+                                                   moving_sphere(from, to), use);
     };
     std::string cases[] = {
         instance(kFrom, kTo, ""),
         instance(kFrom + 1, kTo + 1, "Translate -1 0 3"), // depth is invisible to the orthographic camera
-        instance(kFrom / 2, kTo / 2,
-                 fmt::format(R"(ActiveTransform StartTime
-  Translate {} 0 0
-  ActiveTransform EndTime
-  Translate {} 0 0
-  ActiveTransform All)",
-                             kFrom / 2, kTo / 2)),
+        instance(kFrom / 2, kTo / 2, translation_motion(kFrom / 2, kTo / 2)),
     };
     for (const std::string& text : cases) {
         auto scene = build_scene(parse_pbrt_string(text, "<test>", "."));
