@@ -58,31 +58,41 @@ void shape_bounds(const RTCBoundsFunctionArguments* args) {
     write_bounds(static_cast<const AnalyticShape*>(args->geometryUserPtr)->bounds(), args->bounds_o);
 }
 
-// The nearest crossing that passes the alpha test; pbrt-v4 continues the ray past a rejected one, so a
-// clipped or cut-out near side shows the far side.
-void shape_intersect(const RTCIntersectFunctionNArguments* args) {
-    if (args->N != 1 || !args->valid[0]) return;
-    auto* shape = static_cast<const AnalyticShape*>(args->geometryUserPtr);
-    auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
-    Ray ray{{rh->ray.org_x, rh->ray.org_y, rh->ray.org_z},
-            {rh->ray.dir_x, rh->ray.dir_y, rh->ray.dir_z},
-            rh->ray.tfar};
+// The crossings of an analytic shape within the ray's (tnear, tfar) that pass the alpha test, nearest first;
+// returns how many (at most 2). pbrt-v4 continues the ray past a rejected one, so a clipped or cut-out near
+// side shows the far side.
+int kept_crossings(const AnalyticShape& shape, const RTCRay& r, std::uint32_t geom_id, float t_out[2]) {
+    Ray ray{{r.org_x, r.org_y, r.org_z}, {r.dir_x, r.dir_y, r.dir_z}, r.tfar};
     Crossing c[2];
-    int n = shape->crossings(ray, rh->ray.tnear, rh->ray.tfar, c);
+    int n = shape.crossings(ray, r.tnear, r.tfar, c), kept = 0;
     for (int i = 0; i < n; ++i) {
         float t = float(c[i].t);
-        if (!(t > rh->ray.tnear && t < rh->ray.tfar) || !shape_keeps(*shape, c[i], rh->ray, args->geomID))
-            continue;
-        rh->ray.tfar = t;
-        rh->hit.u = 0;
-        rh->hit.v = 0;
-        rh->hit.Ng_x = rh->hit.Ng_y = 0;
-        rh->hit.Ng_z = 1;
-        rh->hit.primID = args->primID;
-        rh->hit.geomID = args->geomID;
-        rh->hit.instID[0] = args->context->instID[0];
-        return;
+        if (!(t > r.tnear && t < r.tfar) || !shape_keeps(shape, c[i], r, geom_id)) continue;
+        t_out[kept++] = t;
     }
+    return kept;
+}
+
+// The shape's nearest kept crossing, if any, made the ray's hit.
+void record_shape_hit(const AnalyticShape& shape, RTCRayHit* rh, std::uint32_t geom_id, std::uint32_t prim_id,
+                      std::uint32_t inst_id) {
+    float t[2];
+    if (kept_crossings(shape, rh->ray, geom_id, t) == 0) return;
+    rh->ray.tfar = t[0];
+    rh->hit.u = 0;
+    rh->hit.v = 0;
+    rh->hit.Ng_x = rh->hit.Ng_y = 0;
+    rh->hit.Ng_z = 1;
+    rh->hit.primID = prim_id;
+    rh->hit.geomID = geom_id;
+    rh->hit.instID[0] = inst_id;
+}
+
+void shape_intersect(const RTCIntersectFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    record_shape_hit(*static_cast<const AnalyticShape*>(args->geometryUserPtr),
+                     reinterpret_cast<RTCRayHit*>(args->rayhit), args->geomID, args->primID,
+                     args->context->instID[0]);
 }
 
 // Whether a user geometry's crossing at t (surface coordinates u, v) occludes the ray: a context filter
@@ -115,13 +125,10 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
     auto* shape = static_cast<const AnalyticShape*>(args->geometryUserPtr);
     auto* r = reinterpret_cast<RTCRay*>(args->ray);
-    Ray ray{{r->org_x, r->org_y, r->org_z}, {r->dir_x, r->dir_y, r->dir_z}, r->tfar};
-    Crossing c[2];
-    int n = shape->crossings(ray, r->tnear, r->tfar, c);
+    float t[2];
+    int n = kept_crossings(*shape, *r, args->geomID, t);
     for (int i = 0; i < n; ++i) {
-        float t = float(c[i].t);
-        if (!(t > r->tnear && t < r->tfar) || !shape_keeps(*shape, c[i], *r, args->geomID)) continue;
-        if (!occlusion_accepted(args, r, t, 0, 0)) continue;
+        if (!occlusion_accepted(args, r, t[i], 0, 0)) continue;
         r->tfar = -std::numeric_limits<float>::infinity();
         return;
     }
@@ -577,7 +584,48 @@ void Accelerator::flush_curves() {
 
 void Accelerator::commit() {
     flush_curves();
+    // A few analytic shapes in the world are tested by every ray directly, out of Embree: their user-geometry
+    // BVH is one leaf that Embree enters for every ray it traces, at the cost of a traversal of its own
+    // (docs/performance.md: a fog room's one sphere took a third of Embree's instructions).
+    direct_shapes_.clear();
+    std::vector<std::uint32_t> analytic;
+    for (std::uint32_t id = 0; id < records_.size(); ++id)
+        if (records_[id].kind == Kind::Analytic) analytic.push_back(id);
+    if (analytic.size() <= kDirectShapes) {
+        for (std::uint32_t id : analytic) rtcDisableGeometry(rtcGetGeometry(scene_, id));
+        direct_shapes_ = std::move(analytic);
+    }
     rtcCommitScene(scene_);
+}
+
+void Accelerator::intersect_direct(RTCRayHit& rh) const {
+    for (std::uint32_t id : direct_shapes_)
+        record_shape_hit(*records_[id].shape, &rh, id, 0, RTC_INVALID_GEOMETRY_ID);
+}
+
+bool Accelerator::direct_crossings(const RTCRay& r, ShadowCrossings* out) const {
+    for (std::uint32_t id : direct_shapes_) {
+        const Record& rec = records_[id];
+        float t[2];
+        int n = kept_crossings(*rec.shape, r, id, t);
+        for (int i = 0; i < n; ++i) {
+            if (!out) return false; // a plain occlusion test: any crossing blocks
+            if (!rec.passable) return false;
+            if (out->n == kMaxShadowCrossings) {
+                out->overflow = true;
+                return false;
+            }
+            RTCRayHit& k = out->hits[out->n++].rh;
+            k.ray = r;
+            k.ray.tfar = t[i];
+            k.hit = RTCHit{};
+            k.hit.Ng_z = 1;
+            k.hit.primID = 0;
+            k.hit.geomID = id;
+            k.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        }
+    }
+    return true;
 }
 
 bool Accelerator::intersect(const Ray& ray, SurfaceHit* hit) const {
@@ -595,6 +643,7 @@ bool Accelerator::find(const Ray& ray, Found* found) const {
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     if (!traceable(rh.ray)) return false;
     rtcIntersect1(scene_, &ctx, &rh);
+    intersect_direct(rh);
     return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
 }
 
@@ -684,6 +733,35 @@ void Accelerator::fill_hit(const Record& rec, const RTCRayHit& rh, const Ray& ra
             : rec.lights[rec.kind == Kind::Mesh || rec.kind == Kind::Patches ? rh.hit.primID : 0];
 }
 
+bool Accelerator::medium_beyond(const Found& found, const Ray& ray, const Medium** beyond) const {
+    const RTCRayHit& rh = found.rh;
+    const bool instanced = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
+    const Record& rec = record_of(rh.hit.geomID, rh.hit.instID[0]);
+    if (!rec.medium_interface) {
+        *beyond = ray.medium;
+        return true;
+    }
+    const bool moving = instanced && records_[rh.hit.instID[0]].moving;
+    if (!moving && (rec.kind == Kind::Mesh || rec.kind == Kind::Analytic || rec.kind == Kind::NativeSphere)) {
+        // d · n in the geometry's own space: an instance's hit normal is M^-T n_local, and
+        // d · M^-T n_local = M^-1 d · n_local.
+        Ray local = ray;
+        if (instanced) {
+            const Transform& w = records_[rh.hit.instID[0]].world_from_instance;
+            local.o = w.inverse()(ray.o);
+            local.d = w.inverse()(ray.d);
+        }
+        bool along = rec.kind == Kind::Mesh ? dot(local.d, rec.mesh->geometric_normal(rh.hit.primID)) > 0
+                                            : rec.shape->leaves_along_normal(rh.ray.tfar, local);
+        *beyond = along ? rec.medium_interface->outside : rec.medium_interface->inside;
+        return true;
+    }
+    SurfaceHit hit;
+    if (!complete(found, ray, &hit)) return false;
+    *beyond = hit.medium_for(ray.d);
+    return true;
+}
+
 float Accelerator::intersect_distance(const Ray& ray) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
@@ -693,6 +771,7 @@ float Accelerator::intersect_distance(const Ray& ray) const {
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     if (!traceable(rh.ray)) return kInfinity;
     rtcIntersect1(scene_, &ctx, &rh);
+    intersect_direct(rh);
     return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
 }
 
@@ -742,6 +821,7 @@ bool Accelerator::shadow_crossings(const Ray& ray, ShadowCrossings* out) const {
     sc.out = out;
     RTCRay r = to_embree(ray, embree_time(ray.time));
     if (!traceable(r)) return true;
+    if (!direct_crossings(r, out)) return false;
     rtcOccluded1(scene_, &sc.ctx, &r);
     if (out->overflow || (r.tfar < 0 && std::isinf(r.tfar))) return false;
     // Nearest first (insertion sort: a handful at most).
@@ -756,6 +836,7 @@ bool Accelerator::occluded(const Ray& ray) const {
     rtcInitIntersectContext(&ctx);
     RTCRay r = to_embree(ray, embree_time(ray.time));
     if (!traceable(r)) return false;
+    if (!direct_crossings(r, nullptr)) return true;
     rtcOccluded1(scene_, &ctx, &r);
     return r.tfar < 0 && std::isinf(r.tfar);
 }

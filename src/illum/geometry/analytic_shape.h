@@ -67,6 +67,15 @@ public:
     void fill_hit(float t, const Ray& ray, SurfaceHit* hit) const;
     // pbrt-v4's partials at the object-space point `local` (∂n/∂u, ∂n/∂v carried to the world as normals).
     ShadingPartials shading_partials(std::uint32_t prim, Point3f local) const override;
+    // Whether a ray leaving the surface at ray parameter t along ray.d goes to the side the hit's normal
+    // (fill_hit's n, orientation included) points to: the sign of d · n, taken in object space, where
+    // d_obj · n_obj = d · (M^-T n_obj) needs no normal carried to the world (shadow rays through media).
+    bool leaves_along_normal(float t, const Ray& ray) const {
+        Vec3d d = to_object(ray.d);
+        Vec3d p = to_object(ray.o) + d * double(t);
+        double s = dot(d, outward_at(p));
+        return flip_ ? s < 0 : s > 0;
+    }
     // The point, normal and uv of a crossing: what an alpha texture is evaluated at.
     SurfaceHit alpha_point(const Crossing& c) const;
 
@@ -107,6 +116,8 @@ protected:
     virtual bool inside_clip(Vec3d p) const = 0;
     // The surface point nearest to the (almost on-surface) object point p.
     virtual SurfacePoint surface_at(Vec3d p) const = 0;
+    // The outward normal, of any length, at the surface point nearest p (surface_at's n unnormalised).
+    virtual Vec3d outward_at(Vec3d p) const { return surface_at(p).n; }
     // ∂p/∂v, ∂n/∂u and ∂n/∂v of the outward unit normal at a surface point (pbrt-v4's values: what the
     // Weingarten equations give), for bump mapping only.
     struct SecondPartials {

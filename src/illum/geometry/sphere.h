@@ -34,6 +34,7 @@ protected:
     int roots(Vec3d o, Vec3d d, double t[2]) const override;
     bool inside_clip(Vec3d p) const override;
     SurfacePoint surface_at(Vec3d p) const override;
+    Vec3d outward_at(Vec3d p) const override { return p; } // surface_at's n = p / |p|
     SecondPartials partials_at(const SurfacePoint& s) const override;
     Vec3d sample_object(Point2f u) const override;
     double object_area() const override;

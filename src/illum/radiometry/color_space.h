@@ -35,11 +35,15 @@ struct RGBSigmoidPolynomial {
 
     static float sigmoid(float x) {
         // Beyond 1e18 x² overflows (x/√(1+x²) would be 0 or NaN); S is 0 or 1 to float precision there.
-        if (!(std::abs(x) < 1e18f)) return x > 0 ? 1.0f : 0.0f;
-        return 0.5f + x / (2 * std::sqrt(1 + x * x));
+        // Written as a select, so that a loop over wavelengths vectorises.
+        float s = 0.5f + x / (2 * std::sqrt(1 + x * x));
+        float limit = x > 0 ? 1.0f : 0.0f;
+        return std::abs(x) < 1e18f ? s : limit;
     }
     float operator()(float lambda_nm) const {
-        return sigmoid(std::fma(std::fma(c0, lambda_nm, c1), lambda_nm, c2));
+        // Multiply-adds without std::fma: without hardware FMA in the build (no -march) each would be a libm
+        // call, and the four wavelengths' evaluations (uplift.h) could not share vector instructions.
+        return sigmoid((c0 * lambda_nm + c1) * lambda_nm + c2);
     }
     // S is increasing, so the maximum over 360..830 nm is at an end or, for c0 < 0, at the vertex
     // λ = -c1 / (2 c0) (Jakob & Hanika 2019 §3).

@@ -8,6 +8,9 @@
 
 #include <array>
 #include <cstdint>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 #include "illum/radiometry/color_space.h"
 #include "illum/radiometry/sampled_wavelengths.h"
@@ -28,7 +31,26 @@ inline SampledSpectrum sample(const UpliftedRgb& u, const SampledWavelengths& w)
     // A grey's polynomial is the constant c2 (RGBToSpectrumTable::lookup): one sigmoid, the same value.
     if (u.poly.c0 == 0 && u.poly.c1 == 0) return SampledSpectrum(u.scale * u.poly(w.lambda[0]));
     SampledSpectrum s;
+#if defined(__SSE2__)
+    static_assert(kSpectrumSamples == 4);
+    // The four wavelengths at once (every hit of a spectral render uplifts its reflectances): the same
+    // operations as RGBSigmoidPolynomial, x = (c0 λ + c1) λ + c2 and S(x) = 1/2 + x / (2 √(1 + x²)), with
+    // S = 0 or 1 where |x| ≥ 1e18 (x² would overflow).
+    const __m128 l = _mm_loadu_ps(w.lambda);
+    const __m128 x =
+        _mm_add_ps(_mm_mul_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(u.poly.c0), l), _mm_set1_ps(u.poly.c1)), l),
+                   _mm_set1_ps(u.poly.c2));
+    const __m128 one = _mm_set1_ps(1.0f);
+    const __m128 root = _mm_sqrt_ps(_mm_add_ps(one, _mm_mul_ps(x, x)));
+    const __m128 sig = _mm_add_ps(_mm_set1_ps(0.5f), _mm_div_ps(x, _mm_mul_ps(_mm_set1_ps(2.0f), root)));
+    const __m128 abs_x = _mm_andnot_ps(_mm_set1_ps(-0.0f), x);
+    const __m128 finite = _mm_cmplt_ps(abs_x, _mm_set1_ps(1e18f)); // false for NaN too, as the scalar form
+    const __m128 limit = _mm_and_ps(_mm_cmpgt_ps(x, _mm_setzero_ps()), one);
+    const __m128 v = _mm_or_ps(_mm_and_ps(finite, sig), _mm_andnot_ps(finite, limit));
+    _mm_storeu_ps(&s[0], _mm_mul_ps(_mm_set1_ps(u.scale), v));
+#else
     for (int i = 0; i < kSpectrumSamples; ++i) s[i] = u.scale * u.poly(w.lambda[i]);
+#endif
     return s;
 }
 

@@ -112,9 +112,7 @@ SampledSpectrum shadow_transmittance(const Scene& scene, Ray ray, const ShadowTa
         if (t_ray.is_black() || !t_ray.is_finite()) return SampledSpectrum(0.0f);
         if (i == xs.n) break;
         // The medium beyond the surface, on the side the ray leaves it.
-        SurfaceHit hit;
-        if (!scene.accelerator.complete(xs.hits[i], ray, &hit)) continue;
-        stretch.medium = hit.medium_for(ray.d);
+        if (!scene.accelerator.medium_beyond(xs.hits[i], ray, &stretch.medium)) continue;
         t0 = t1;
     }
     return t_ray;
