@@ -17,9 +17,12 @@
 // weigh it so (light sampling's r_l omits T there), which removes the shadow rays' binary noise in fog.
 #pragma once
 
+#include <optional>
+
 #include "illum/bsdf/bxdf.h"
 #include "illum/light/light.h"
 #include "illum/math/rng.h"
+#include "illum/medium/entry_medium.h"
 #include "illum/medium/equiangular.h"
 #include "illum/medium/henyey_greenstein.h"
 #include "illum/render/integrator.h"
@@ -50,6 +53,25 @@ public:
         PCG32 rng;
         HomogeneousCache media;
         float time = 0; // the camera sample's time (motion blur): every ray of the path has it
+        // The medium of a textured subsurface shape, evaluated where the path entered it (entry_medium.h;
+        // made when first needed, so paths elsewhere pay nothing), and whether the path has entered one
+        // (such paths stay volpath's: light tracing's caustics leave them out, volpath_caustics.h).
+        std::optional<EntryMedium> entry;
+        std::optional<EntryMedium> shadow_entry; // a shadow ray's, from the boundary into the shape
+        bool entered_textured = false;
+        // The medium a ray leaving `hit` travels in, given next = hit.medium_for(its direction), evaluated
+        // into `slot`; the path's own ray (not a shadow ray) sets entered_textured.
+        const Medium* enter(const Medium* next, const SurfaceHit& hit, const SampledWavelengths& lambda,
+                            std::optional<EntryMedium>& slot, bool path_ray) {
+            if (!next || !next->evaluated_at_entry()) [[likely]]
+                return next;
+            if (!slot) slot.emplace();
+            bool fresh = false;
+            const Medium* m = entered_medium(next, hit, lambda, &*slot, &fresh);
+            if (fresh) media.forget(&*slot);
+            entered_textured = entered_textured || path_ray;
+            return m;
+        }
     };
     // Where next-event estimation starts: a surface point with its BSDF, or a point in a medium with its
     // phase function (then `hit` and `bsdf` are null).

@@ -1,0 +1,62 @@
+// Media evaluated where a path enters them: a textured subsurface material's interior has the coefficients
+// its textures give at the point where the path refracted into the shape, homogeneous for the whole walk
+// inside (pbrt-v4's SubsurfaceMaterial::GetBSSRDF evaluates its textures once, at the BSSRDF's entry
+// point; Cycles' random walk does the same). The integrators ask entered_medium() for the medium a ray
+// leaving a surface travels in: it evaluates such a medium at the surface point into storage the path
+// owns (no allocation), and keeps the path's evaluation when the ray was already inside it (a reflection
+// off the inside of the boundary).
+#pragma once
+
+#include "illum/geometry/surface_hit.h"
+#include "illum/medium/medium.h"
+
+namespace illum {
+
+// A medium's coefficients at one entry point, at the path's wavelengths (they do not change along a path):
+// homogeneous, not emissive.
+class EntryMedium final : public Medium {
+public:
+    EntryMedium() = default;
+    // Copies keep the values, not the identity of the medium they were evaluated from (none needed).
+    void set(const Medium& from, SampledSpectrum sigma_a, SampledSpectrum sigma_s, HenyeyGreenstein phase) {
+        entered_from_ = &from;
+        props_.sigma_a = sigma_a;
+        props_.sigma_s = sigma_s;
+        props_.phase = phase;
+    }
+    bool is_emissive() const override { return false; }
+    bool is_homogeneous() const override { return true; }
+    MediumProperties sample_point(Point3f, const SampledWavelengths&) const override { return props_; }
+    MajorantIterator sample_ray(const Ray&, float tmax, const SampledWavelengths&) const override {
+        return MajorantIterator::single(0, tmax, props_.sigma_a + props_.sigma_s);
+    }
+
+private:
+    MediumProperties props_;
+};
+
+// A medium evaluated at entry points.
+class EntryEvaluatedMedium : public Medium {
+public:
+    EntryEvaluatedMedium() { evaluated_at_entry_ = true; }
+    // Its coefficients at the entry point `at`, into *out.
+    virtual void evaluate(const TextureEvalContext& at, const SampledWavelengths& lambda,
+                          EntryMedium* out) const = 0;
+};
+
+// The medium a ray that leaves `hit` travels in, given next = hit.medium_for(direction): next itself, unless
+// it is evaluated at entry; then the medium of the ray that found the hit if that was evaluated from next
+// (the path is inside already), else next evaluated at the hit into *slot (*fresh is set then: a cache of
+// the slot's properties must forget them).
+inline const Medium* entered_medium(const Medium* next, const SurfaceHit& hit,
+                                    const SampledWavelengths& lambda, EntryMedium* slot,
+                                    bool* fresh = nullptr) {
+    if (!next || !next->evaluated_at_entry()) [[likely]]
+        return next;
+    if (hit.medium && hit.medium->entered_from() == next) return hit.medium;
+    static_cast<const EntryEvaluatedMedium*>(next)->evaluate(hit, lambda, slot);
+    if (fresh) *fresh = true;
+    return slot;
+}
+
+} // namespace illum
