@@ -72,7 +72,7 @@ SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path
 
     shadow.time = path.time;
     // Into a textured subsurface shape from its boundary: evaluated here, unless the path is inside.
-    if (v.hit) shadow.medium = path.enter(shadow.medium, *v.hit, tc.lambda, path.shadow_entry, false);
+    if (v.hit) shadow.medium = path.enter(shadow.medium, *v.hit, tc.lambda, path.shadow_entry);
     SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
     ShadowTarget target{ls->p_light, ls->p_light_error, ls->n_light, ls->at_infinity, ls->wi};
     SampledSpectrum t_ray = shadow_transmittance(scene_, shadow, target, path.channel, path.rng, tc.lambda,
@@ -171,7 +171,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         // A caustic (specular bounce before the light, non-specular first vertex) is light tracing's, for
         // film positions light tracing can splat to.
         if (caustics_by_light_tracing_ && hit && specular_bounce && depth > 0 && first_vertex_non_specular &&
-            !path.entered_textured && split())
+            split())
             return;
         if (depth == 0 && caustics_by_light_tracing_ && hit && split()) {
             // A light seen directly: weighed against light tracing's view of it (volpath_caustics.h).
@@ -304,7 +304,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         if (!bsdf) {
             // A boundary between media with no surface: the path goes on unchanged.
             ray = hit.spawn_ray(ray.d);
-            ray.medium = path.enter(ray.medium, hit, tc.lambda, path.entry, true);
+            ray.medium = path.enter(ray.medium, hit, tc.lambda, path.entry);
             if (rd.valid) rd.advance(hit.t);
             ++crossings;
             continue;
@@ -332,7 +332,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         if (depth == 1) first_vertex_non_specular = !specular_bounce;
         if (bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
         ray = hit.spawn_ray(bs->wi);
-        ray.medium = path.enter(ray.medium, hit, tc.lambda, path.entry, true);
+        ray.medium = path.enter(ray.medium, hit, tc.lambda, path.entry);
         if (rd.valid) [[unlikely]]
             rd = continue_differentials(hit, rd, *bs);
 

@@ -54,22 +54,19 @@ public:
         HomogeneousCache media;
         float time = 0; // the camera sample's time (motion blur): every ray of the path has it
         // The medium of a textured subsurface shape, evaluated where the path entered it (entry_medium.h;
-        // made when first needed, so paths elsewhere pay nothing), and whether the path has entered one
-        // (such paths stay volpath's: light tracing's caustics leave them out, volpath_caustics.h).
-        std::optional<EntryMedium> entry;
-        std::optional<EntryMedium> shadow_entry; // a shadow ray's, from the boundary into the shape
-        bool entered_textured = false;
+        // made when first needed, so paths elsewhere pay nothing), and a shadow ray's, from the boundary into
+        // the shape.
+        std::optional<EntryMedium> entry, shadow_entry;
         // The medium a ray leaving `hit` travels in, given next = hit.medium_for(its direction), evaluated
-        // into `slot`; the path's own ray (not a shadow ray) sets entered_textured.
+        // into `slot`.
         const Medium* enter(const Medium* next, const SurfaceHit& hit, const SampledWavelengths& lambda,
-                            std::optional<EntryMedium>& slot, bool path_ray) {
+                            std::optional<EntryMedium>& slot) {
             if (!next || !next->evaluated_at_entry()) [[likely]]
                 return next;
             if (!slot) slot.emplace();
             bool fresh = false;
             const Medium* m = entered_medium(next, hit, lambda, &*slot, &fresh);
             if (fresh) media.forget(&*slot);
-            entered_textured = entered_textured || path_ray;
             return m;
         }
     };
