@@ -4,7 +4,8 @@
 // point; Cycles' random walk does the same). The integrators ask entered_medium() for the medium a ray
 // leaving a surface travels in: it evaluates such a medium at the surface point into storage the path
 // owns (no allocation), and keeps the path's evaluation when the ray was already inside it (a reflection
-// off the inside of the boundary).
+// off the inside of the boundary). Only a surface with a material can lead into such a medium (the
+// subsurface material's shape), so rays crossing surfaces without material need not ask.
 #pragma once
 
 #include "illum/geometry/surface_hit.h"

@@ -210,7 +210,6 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
         BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
         if (!bsdf) {
             ray = hit.spawn_ray(ray.d); // an interface without material: no vertex
-            enter(hit);
             ++crossings;
             continue;
         }

@@ -274,7 +274,6 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
         if (!bsdf) {
             // An interface between media: crossed, not a vertex.
             ray = hit.spawn_ray(ray.d);
-            ray.medium = walk_into(ctx, ray.medium, hit);
             ++crossings;
             continue;
         }

@@ -304,7 +304,6 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         if (!bsdf) {
             // A boundary between media with no surface: the path goes on unchanged.
             ray = hit.spawn_ray(ray.d);
-            ray.medium = path.enter(ray.medium, hit, tc.lambda, path.entry);
             if (rd.valid) rd.advance(hit.t);
             ++crossings;
             continue;
