@@ -212,7 +212,8 @@ Texture "s" "spectrum" "constant" "rgb value" [4 3 2]
     }
 }
 
-// The scene builds without the old "not supported" warning.
+// The scene builds without the old "not supported" warning, and so does the committed comparison scene,
+// which renders finite.
 TEST(TexturedSubsurface, BuildsWithoutWarnings) {
     SceneDesc desc = parse_pbrt_string(
         sphere_scene(halves("r", "0.9 0.6 0.2", "0.2 0.5 0.95"),
@@ -220,6 +221,20 @@ TEST(TexturedSubsurface, BuildsWithoutWarnings) {
         "<test>", ".");
     auto scene = build_scene(desc);
     EXPECT_TRUE(scene->warnings.empty()) << scene->warnings.front();
+
+    SceneDesc file =
+        parse_pbrt_file(std::string(ILLUM_SOURCE_DIR) + "/scenes/media/subsurface-textured.pbrt");
+    file.set_film_resolution(16, 12);
+    auto built = build_scene(file);
+    EXPECT_TRUE(built->warnings.empty()) << built->warnings.front();
+    auto integrator = make_integrator("volpath", *built, built->request.max_depth);
+    RenderOptions opt;
+    opt.spp = 2;
+    opt.quiet = true;
+    opt.spectral = true;
+    RenderResult r = render(*built, *integrator, opt);
+    EXPECT_EQ(r.nonfinite_samples, 0u);
+    EXPECT_FALSE(r.image.has_non_finite());
 }
 
 // The other integrators that walk the interior (bdpt and vcm through path_vertex.h's walk and connections,
