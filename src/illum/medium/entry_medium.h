@@ -8,6 +8,8 @@
 // subsurface material's shape), so rays crossing surfaces without material need not ask.
 #pragma once
 
+#include <new>
+
 #include "illum/geometry/surface_hit.h"
 #include "illum/medium/medium.h"
 
@@ -43,6 +45,28 @@ public:
     // Its coefficients at the entry point `at`, into *out.
     virtual void evaluate(const TextureEvalContext& at, const SampledWavelengths& lambda,
                           EntryMedium* out) const = 0;
+};
+
+// Per-path storage for N entry media, each made when first needed: a path that enters none initialises only
+// the flags (kept before the storage, so that initialising the fields around it does not reach into it).
+// EntryMedium owns nothing, so the objects are not destroyed.
+template <int N>
+class EntryMediumSlots {
+public:
+    EntryMediumSlots() = default;
+    EntryMediumSlots(const EntryMediumSlots&) = delete;
+    EntryMediumSlots& operator=(const EntryMediumSlots&) = delete;
+    EntryMedium* get(int i) {
+        if (!made_[i]) {
+            ::new (static_cast<void*>(storage_[i])) EntryMedium();
+            made_[i] = true;
+        }
+        return std::launder(reinterpret_cast<EntryMedium*>(storage_[i]));
+    }
+
+private:
+    bool made_[N] = {};
+    alignas(EntryMedium) unsigned char storage_[N][sizeof(EntryMedium)];
 };
 
 // The medium a ray that leaves `hit` travels in, given next = hit.medium_for(direction): next itself, unless
