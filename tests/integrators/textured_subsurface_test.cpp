@@ -171,6 +171,33 @@ TEST(TexturedSubsurface, TwoValuedReflectanceTextureGivesEachHalfItsMaterial) {
                       spectral, spectral ? "reflectance halves, spectral" : "reflectance halves, RGB");
 }
 
+// An image map (marble-like use): scenes/texture-filtering/checker.png, 8-bit checks of reflectance 0.05 and
+// 0.8 (32 × 32 over the sphere's uv): the sphere's mean lies strictly between the plain materials'.
+TEST(TexturedSubsurface, ImageMapReflectanceLiesBetweenItsTexels) {
+    const std::string image = std::string(ILLUM_SOURCE_DIR) + "/scenes/texture-filtering/checker.png";
+    RenderResult t = render_pbrt(
+        sphere_scene(fmt::format(R"(Texture "img" "spectrum" "imagemap" "string filename" "{}")", image),
+                     R"(Material "subsurface" "texture reflectance" "img" "rgb mfp" [0.1 0.1 0.1])"),
+        volpath(16, false, 7));
+    RenderResult dark = render_pbrt(
+        sphere_scene("",
+                     R"(Material "subsurface" "rgb reflectance" [0.05 0.05 0.05] "rgb mfp" [0.1 0.1 0.1])"),
+        volpath(16, false, 8));
+    RenderResult light = render_pbrt(
+        sphere_scene("", R"(Material "subsurface" "rgb reflectance" [0.8 0.8 0.8] "rgb mfp" [0.1 0.1 0.1])"),
+        volpath(16, false, 9));
+    EXPECT_EQ(t.nonfinite_samples, 0u);
+    for (int c = 0; c < 3; ++c) {
+        Region a = rows_mean(dark.image, nullptr, c, 0, 16), m = rows_mean(t.image, &dark.image, c, 0, 16);
+        Region b = rows_mean(light.image, &t.image, c, 0, 16);
+        std::printf(
+            "image map ch %d: dark %.5f, textured - dark %+.5f +- %.2g, light - textured %+.5f +- %.2g\n", c,
+            a.mean, m.mean, m.standard_error, b.mean, b.standard_error);
+        EXPECT_GT(m.mean, kSigmas * m.standard_error) << "channel " << c;
+        EXPECT_GT(b.mean, kSigmas * b.standard_error) << "channel " << c;
+    }
+}
+
 // (3) Negative texels clamp as pbrt-v4's GetBSSRDF clamps them (textures are only known at render time;
 // negative constants stay errors): σ = max(0, scale · value), so a negative sigma_a is a zero one; a mean
 // free path at or below zero (pbrt-v4: a division by zero) is kept at 1e-8, finite.
