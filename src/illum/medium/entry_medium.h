@@ -20,7 +20,7 @@ namespace illum {
 class EntryMedium final : public Medium {
 public:
     EntryMedium() = default;
-    // Copies keep the values, not the identity of the medium they were evaluated from (none needed).
+    // Its coefficients, evaluated from `from` (copies keep both, as vcm's stored light vertices need).
     void set(const Medium& from, SampledSpectrum sigma_a, SampledSpectrum sigma_s, HenyeyGreenstein phase) {
         entered_from_ = &from;
         props_.sigma_a = sigma_a;

@@ -34,8 +34,8 @@ struct StoredVertex {
     std::uint32_t index = 0; // 0: the vertex on the light
     bool terminated = false; // the subpath's secondary wavelengths were terminated (dispersion)
     // A vertex in a textured subsurface shape's medium, evaluated where the subpath entered (entry_medium.h;
-    // in the arena while the subpath was traced): its index in the chunk's `entered`, and whether v.medium
-    // (a medium vertex) or v.hit.medium (a surface vertex) is it. -1: none.
+    // in the arena while the subpath was traced): its copy's index in the chunk's `entered`, for v.medium
+    // (a medium vertex) or v.hit.medium (a surface vertex). -1: none.
     std::int32_t entered = -1;
 };
 
