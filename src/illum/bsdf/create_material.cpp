@@ -13,6 +13,7 @@
 #include "illum/bsdf/subsurface_material.h"
 #include "illum/medium/homogeneous_medium.h"
 #include "illum/medium/subsurface_coefficients.h"
+#include "illum/medium/textured_subsurface_medium.h"
 #include "illum/param/spectrum_param.h"
 #include "illum/radiometry/named_spectra.h"
 #include "illum/radiometry/spectra.h"
@@ -69,8 +70,8 @@ public:
     }
 
 private:
-    // A constant RGB or spectrum parameter: its RGB and, for a spectrum, its table; nothing when absent. A
-    // texture is reported and rendered as absent.
+    // A constant RGB or spectrum parameter: its RGB and, for a spectrum, its table; nothing when absent or
+    // a texture.
     struct ConstantSpectrum {
         Color3 rgb;
         std::shared_ptr<const DenselySampledSpectrum> spectrum;
@@ -87,10 +88,19 @@ private:
             float v = m_.params.get_float(name, 0);
             return ConstantSpectrum{Color3(v), nullptr};
         }
-        p->used = true;
-        tex_.diagnostics().unsupported(
-            p->loc, fmt::format("subsurface: a textured \"{}\" is not supported; its default is used", name));
         return std::nullopt;
+    }
+    bool textured(const std::string& name) const {
+        const Param* p = m_.params.find(name);
+        return p && p->type == ParamType::Texture;
+    }
+    // A subsurface coefficient parameter of a textured pair (textured_subsurface_medium.h): its texture,
+    // or the constant's (with its spectrum, for spectral mode); `def` when absent.
+    SubsurfaceParam subsurface_param(const std::string& name, SpectrumKind kind, Color3 def) {
+        SubsurfaceParam s;
+        if (auto c = constant_spectrum(name, kind)) s.spectrum = c->spectrum;
+        s.texture = tex_.color(m_.params, name, def);
+        return s;
     }
 
     // pbrt-v4's "measured" (measured_material.h): the tables of the "filename" RGL .bsdf file.
@@ -120,6 +130,7 @@ private:
         RoughnessParams rough = roughness();
         std::string name = ps.get_string("name", "");
         MediumSpectrum sigma_a, sigma_s;
+        std::unique_ptr<Medium> interior; // set by a textured pair, else made from sigma_a and sigma_s
         auto check = [&](const std::string& param, Color3 c) {
             for (float v : {c.r, c.g, c.b})
                 if (!std::isfinite(v) || v < 0)
@@ -135,6 +146,14 @@ private:
             g = 0;
             sigma_a = MediumSpectrum(c->sigma_a);
             sigma_s = MediumSpectrum(c->sigma_s);
+        } else if ((ps.has("sigma_a") || ps.has("sigma_s")) && (textured("sigma_a") || textured("sigma_s"))) {
+            if (!ps.has("sigma_a") || !ps.has("sigma_s"))
+                throw Error(m_.loc, "subsurface: give both \"sigma_a\" and \"sigma_s\", or neither");
+            for (const char* n : {"sigma_a", "sigma_s"})
+                if (auto c = constant_spectrum(n, SpectrumKind::Unbounded)) check(n, c->rgb);
+            interior = TexturedSubsurfaceMedium::from_sigma(
+                subsurface_param("sigma_a", SpectrumKind::Unbounded, Color3(0.0f)),
+                subsurface_param("sigma_s", SpectrumKind::Unbounded, Color3(0.0f)), scale, g);
         } else if (ps.has("sigma_a") || ps.has("sigma_s")) {
             auto sa = constant_spectrum("sigma_a", SpectrumKind::Unbounded);
             auto ss = constant_spectrum("sigma_s", SpectrumKind::Unbounded);
@@ -146,6 +165,18 @@ private:
             sigma_s = ss->spectrum ? MediumSpectrum(ss->rgb, ss->spectrum) : MediumSpectrum(ss->rgb);
             sigma_a *= scale;
             sigma_s *= scale;
+        } else if (ps.has("reflectance") && (textured("reflectance") || textured("mfp"))) {
+            if (!(scale > 0))
+                throw Error(ps.find("scale")->loc, "subsurface: \"scale\" must be positive with \"mfp\"");
+            if (auto r = constant_spectrum("reflectance", SpectrumKind::Unbounded))
+                check("reflectance", clamp(r->rgb, 0.0f, 1.0f));
+            if (auto l = constant_spectrum("mfp", SpectrumKind::Unbounded))
+                for (float v : {l->rgb.r, l->rgb.g, l->rgb.b})
+                    if (!(v > 0)) throw Error(ps.find("mfp")->loc, "subsurface: \"mfp\" must be positive");
+            interior = TexturedSubsurfaceMedium::from_reflectance(
+                subsurface_param("reflectance", SpectrumKind::Unbounded, Color3(0.5f)),
+                subsurface_param("mfp", SpectrumKind::Unbounded, Color3(kSubsurfaceDefaultMfp)), scale,
+                eta.value, g);
         } else if (ps.has("reflectance")) {
             auto refl = constant_spectrum("reflectance", SpectrumKind::Unbounded);
             auto mfp = constant_spectrum("mfp", SpectrumKind::Unbounded);
@@ -169,9 +200,8 @@ private:
                 UpliftedRgb rp = uplift_albedo_poly(r, cs), mp = uplift_unbounded_poly(l, cs);
                 auto at = [&](double nm) {
                     float rho = refl && refl->spectrum ? (*refl->spectrum)(float(nm)) : float(rp(nm));
-                    float len =
-                        std::max(mfp && mfp->spectrum ? (*mfp->spectrum)(float(nm)) : float(mp(nm)), 1e-8f);
-                    return subsurface_from_reflectance(std::clamp(rho, 0.0f, 1.0f), len, scale, table);
+                    float len = mfp && mfp->spectrum ? (*mfp->spectrum)(float(nm)) : float(mp(nm));
+                    return subsurface_from_reflectance_value(rho, len, scale, table);
                 };
                 (*sa)[std::size_t(i)] =
                     DenselySampledSpectrum::from([&](double nm) { return at(nm).sigma_a; });
@@ -185,8 +215,9 @@ private:
             sigma_a = MediumSpectrum(c.sigma_a);
             sigma_s = MediumSpectrum(c.sigma_s);
         }
-        auto interior =
-            std::make_unique<HomogeneousMedium>(sigma_a, sigma_s, g, Emission(Color3(0.0f)), false);
+        if (!interior)
+            interior =
+                std::make_unique<HomogeneousMedium>(sigma_a, sigma_s, g, Emission(Color3(0.0f)), false);
         return own(std::make_unique<SubsurfaceMaterial>(std::move(eta), rough, std::move(interior)));
     }
 

@@ -3,7 +3,10 @@
 // material's parameters (medium/subsurface_coefficients.h: a measured medium by "name", "sigma_a" and
 // "sigma_s", or "reflectance" with "mfp"). volpath walks inside the shape through that medium (a
 // volumetric random walk, as Cycles' random-walk subsurface scattering), instead of pbrt-v4's tabulated
-// diffusion BSSRDF (photon beam diffusion), which approximates the same light transport.
+// diffusion BSSRDF (photon beam diffusion), which approximates the same light transport. Textured
+// coefficients (any of the four may be a spectrum texture, as in pbrt-v4) make the interior a
+// TexturedSubsurfaceMedium (medium/textured_subsurface_medium.h): evaluated where a path enters the shape
+// (pbrt-v4 evaluates its textures at the BSSRDF's entry point) and homogeneous for the walk inside.
 #pragma once
 
 #include <memory>

@@ -31,12 +31,25 @@ public:
     // The majorant segments of `ray` (world space, unit direction) over t in [0, tmax).
     virtual MajorantIterator sample_ray(const Ray& ray, float tmax,
                                         const SampledWavelengths& lambda) const = 0;
+    // A medium whose coefficients depend on where a path enters it (a textured subsurface material's): the
+    // integrators evaluate it at the entry point and walk that instead (entry_medium.h).
+    bool evaluated_at_entry() const { return evaluated_at_entry_; }
+    // A medium so evaluated: the one it was evaluated from (else null).
+    const Medium* entered_from() const { return entered_from_; }
+
+protected:
+    bool evaluated_at_entry_ = false;
+    const Medium* entered_from_ = nullptr;
 };
 
 // A homogeneous medium's properties at a path's wavelengths, evaluated once for the path (they are the same
 // everywhere, and the wavelengths do not change along a path).
 class HomogeneousCache {
 public:
+    // Forget m's properties (an entry medium re-evaluated in place).
+    void forget(const Medium* m) {
+        if (medium_ == m) medium_ = nullptr;
+    }
     const MediumProperties& get(const Medium& m, const SampledWavelengths& lambda) {
         if (&m != medium_) {
             props_ = m.sample_point(Point3f(), lambda);

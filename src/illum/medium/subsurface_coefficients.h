@@ -19,11 +19,13 @@
 // Others: "float scale" 1; "float eta" 1.33 (the BSSRDF table and the dielectric boundary; a float only);
 // "float g" 0 (Henyey-Greenstein, for the table); "roughness"/"uroughness"/"vroughness" 0 and
 // "remaproughness" true for the boundary's BSDF.
+// Textures (2. and 3.) are evaluated where a path enters the shape (textured_subsurface_medium.h).
 // Spectral mode: named and default triples are RGBUnboundedSpectrum (MediumSpectrum(Color3)); with
 // "reflectance", evaluate reflectance and mfp at each wavelength and call subsurface_from_reflectance per
 // value, as pbrt-v4 inverts per wavelength sample.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <string_view>
 
@@ -62,6 +64,15 @@ SubsurfaceCoefficient subsurface_from_reflectance(float reflectance, float mfp, 
                                                   const EffectiveAlbedoTable& table);
 SubsurfaceCoefficients subsurface_from_reflectance(Color3 reflectance, Color3 mfp, float scale,
                                                    const EffectiveAlbedoTable& table);
+// 3. for one wavelength's or texel's reflectance and mean free path as pbrt-v4 reads them: the reflectance
+// clamped to [0, 1], the mean free path kept at least kSubsurfaceMinMfp (so the coefficients stay finite:
+// pbrt-v4's ClampZero lets a zero or negative texel through to a division by zero).
+inline constexpr float kSubsurfaceMinMfp = 1e-8f;
+inline SubsurfaceCoefficient subsurface_from_reflectance_value(float reflectance, float mfp, float scale,
+                                                               const EffectiveAlbedoTable& table) {
+    return subsurface_from_reflectance(std::clamp(reflectance, 0.0f, 1.0f),
+                                       mfp > kSubsurfaceMinMfp ? mfp : kSubsurfaceMinMfp, scale, table);
+}
 // The g the material's table must use: 0 with a "name", else "g".
 inline float subsurface_table_g(bool has_name, float g) { return has_name ? 0.0f : g; }
 

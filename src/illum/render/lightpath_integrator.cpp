@@ -7,9 +7,11 @@
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 #include <oneapi/tbb/task_group.h>
+#include <optional>
 #include <thread>
 
 #include "illum/light/light.h"
+#include "illum/medium/entry_medium.h"
 #include "illum/medium/sample_majorant.h"
 #include "illum/render/chunked_schedule.h"
 #include "illum/render/direct_view_mis.h"
@@ -136,6 +138,14 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
     ray.time = time;
     ray.medium = light->medium_towards(ray.d, les->n);
     bool first_vertex = true; // caustics only: the first scattering must be specular
+    // Into a textured subsurface shape: its medium evaluated where the particle enters (entry_medium.h).
+    std::optional<EntryMedium> entry;
+    auto enter = [&](const SurfaceHit& hit) {
+        if (!ray.medium || !ray.medium->evaluated_at_entry()) [[likely]]
+            return;
+        if (!entry) entry.emplace();
+        ray.medium = entered_medium(ray.medium, hit, tc.lambda, &*entry);
+    };
     for (int depth = 0, crossings = 0; (max_depth_ < 0 || depth < max_depth_) && crossings < 1024;) {
         SurfaceHit hit;
         bool found = intersect(ray, &hit, tc);
@@ -227,6 +237,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
         float cos_i = std::abs(dot(bs->wi, Vector3f(hit.ns))) * shading_normal_adjoint(hit, wo, bs->wi);
         beta *= throughput_weight(bs->f, cos_i, bs->pdf);
         ray = hit.spawn_ray(bs->wi);
+        enter(hit);
         ++depth;
         if (!beta.is_finite() || beta.is_black()) break;
 

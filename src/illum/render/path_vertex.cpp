@@ -1,8 +1,10 @@
 #include "illum/render/path_vertex.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "illum/bsdf/material.h"
+#include "illum/medium/entry_medium.h"
 #include "illum/medium/medium.h"
 #include "illum/medium/sample_majorant.h"
 #include "illum/render/shadow_transmittance.h"
@@ -17,6 +19,16 @@ constexpr int kMaxCrossings = 1024;
 
 TransportMode other(TransportMode m) {
     return m == TransportMode::Radiance ? TransportMode::Importance : TransportMode::Radiance;
+}
+
+// The medium a subpath's ray leaving `hit` travels in (next = hit.medium_for(its direction)): a textured
+// subsurface shape's medium is evaluated where this subpath enters it (entry_medium.h), in the thread's
+// arena, which lives as long as the sample's subpaths.
+const Medium* walk_into(const PathContext& ctx, const Medium* next, const SurfaceHit& hit) {
+    if (!next || !next->evaluated_at_entry()) [[likely]]
+        return next;
+    if (hit.medium && hit.medium->entered_from() == next) return hit.medium;
+    return entered_medium(next, hit, ctx.tc.lambda, ctx.tc.arena.make<EntryMedium>());
 }
 
 } // namespace
@@ -293,6 +305,7 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
         }
         prev.pdf_rev = convert_density(v, pdf_rev, prev);
         ray = hit.spawn_ray(bs->wi);
+        ray.medium = walk_into(ctx, ray.medium, hit);
     }
     return n;
 }
@@ -324,6 +337,10 @@ SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVerte
         }
     }
     ray.time = ctx.time;
+    // From a textured subsurface shape's boundary into it: evaluated at a, unless a's subpath is inside.
+    std::optional<EntryMedium> entry;
+    if (a.type == VertexType::Surface && ray.medium && ray.medium->evaluated_at_entry()) [[unlikely]]
+        ray.medium = entered_medium(ray.medium, a.hit, ctx.tc.lambda, &entry.emplace());
     SampledSpectrum r_u(1.0f), r_l(1.0f);
     SampledSpectrum t =
         shadow_transmittance(ctx.scene, ray, target, ch, ctx.rng, ctx.tc.lambda, &r_u, &r_l, &ctx.tc.rays);

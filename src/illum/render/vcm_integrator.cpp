@@ -11,6 +11,7 @@
 
 #include "illum/camera/film.h"
 #include "illum/camera/splat_film.h"
+#include "illum/medium/entry_medium.h"
 #include "illum/render/light_vertex_grid.h"
 #include "illum/render/path_vertex.h"
 #include "illum/render/vcm_mis.h"
@@ -32,6 +33,10 @@ struct StoredVertex {
     std::uint32_t path = 0;
     std::uint32_t index = 0; // 0: the vertex on the light
     bool terminated = false; // the subpath's secondary wavelengths were terminated (dispersion)
+    // A vertex in a textured subsurface shape's medium, evaluated where the subpath entered (entry_medium.h;
+    // in the arena while the subpath was traced): its copy's index in the chunk's `entered`, for v.medium
+    // (a medium vertex) or v.hit.medium (a surface vertex). -1: none.
+    std::int32_t entered = -1;
 };
 
 // One chunk of light subpaths: its vertices (subpaths in order) and its light-tracing splats.
@@ -39,6 +44,7 @@ struct LightChunk {
     std::vector<StoredVertex> vertices;
     std::vector<std::uint32_t> path_begin; // subpath p0 + i starts at vertices[path_begin[i]]
     std::vector<Splat> splats;
+    std::vector<EntryMedium> entered; // the entered media of its vertices (StoredVertex::entered)
     int dropped = 0;
 };
 
@@ -244,6 +250,11 @@ void VcmRender::trace_light(std::size_t p, int sample_index, ThreadContext& tc, 
         sv.path = std::uint32_t(p);
         sv.index = std::uint32_t(i);
         sv.terminated = terminated;
+        const Medium* m = sv.v.type == VertexType::Surface ? sv.v.hit.medium : sv.v.medium;
+        if (m && m->entered_from()) [[unlikely]] {
+            sv.entered = std::int32_t(out.entered.size());
+            out.entered.push_back(static_cast<const EntryMedium&>(*m));
+        }
         out.vertices.push_back(sv);
     }
 }
@@ -255,6 +266,7 @@ void VcmRender::light_pass(int sample_index, tbb::task_arena& arena) {
             out.vertices.clear();
             out.path_begin.clear();
             out.splats.clear();
+            out.entered.clear();
             out.dropped = 0;
             ThreadContext& tc = contexts_->local();
             Scratch& sc = scratch_->local();
@@ -449,6 +461,9 @@ void VcmRender::trace_camera(int x, int y, int sample_index, ThreadContext& tc, 
         const StoredVertex& sv = chunk.vertices[b0 + std::uint32_t(i)];
         PathVertex& v = sc.light[std::size_t(i)];
         v = sv.v;
+        if (sv.entered >= 0) [[unlikely]]
+            (v.type == VertexType::Surface ? v.hit.medium : v.medium) =
+                &chunk.entered[std::size_t(sv.entered)];
         if (v.type == VertexType::Surface) {
             SampledWavelengths lambda = lambda_;
             v.bsdf = v.hit.material->bsdf(v.hit, lambda, tc.arena);

@@ -26,6 +26,13 @@ bool VolPathIntegrator::needed(const Scene& scene) {
                        [](const std::unique_ptr<Material>& m) { return m->interior() != nullptr; });
 }
 
+bool VolPathIntegrator::has_entry_media(const Scene& scene) {
+    return std::any_of(scene.materials.begin(), scene.materials.end(),
+                       [](const std::unique_ptr<Material>& m) {
+                           return m->interior() && m->interior()->evaluated_at_entry();
+                       });
+}
+
 SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path, ThreadContext& tc) const {
     Sampler& sampler = tc.sampler;
     float u_light = sampler.get_1d();
@@ -71,6 +78,9 @@ SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path
     }
 
     shadow.time = path.time;
+    // Into a textured subsurface shape from its boundary: evaluated here, unless the path is inside.
+    if (entry_media_ && v.hit) [[unlikely]]
+        shadow.medium = path.enter(shadow.medium, *v.hit, tc.lambda, 1);
     SampledSpectrum r_u_t(1.0f), r_l_t(1.0f);
     ShadowTarget target{ls->p_light, ls->p_light_error, ls->n_light, ls->at_infinity, ls->wi};
     SampledSpectrum t_ray = shadow_transmittance(scene_, shadow, target, path.channel, path.rng, tc.lambda,
@@ -162,6 +172,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
     int depth = 0;
     LightSampleContext prev_ctx;
     RayDifferentials rd = tc.camera_differentials; // valid only in scenes with filtered textures
+    const bool entry_media = entry_media_;
 
     // Emission found by the unidirectional technique, weighed against light sampling from prev_ctx.
     auto add_emission = [&](SampledSpectrum le, const Light* light, const SurfaceHit* hit) {
@@ -329,6 +340,8 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         if (depth == 1) first_vertex_non_specular = !specular_bounce;
         if (bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
         ray = hit.spawn_ray(bs->wi);
+        if (entry_media) [[unlikely]]
+            ray.medium = path.enter(ray.medium, hit, tc.lambda, 0);
         if (rd.valid) [[unlikely]]
             rd = continue_differentials(hit, rd, *bs);
 

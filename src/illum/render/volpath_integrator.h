@@ -20,6 +20,7 @@
 #include "illum/bsdf/bxdf.h"
 #include "illum/light/light.h"
 #include "illum/math/rng.h"
+#include "illum/medium/entry_medium.h"
 #include "illum/medium/equiangular.h"
 #include "illum/medium/henyey_greenstein.h"
 #include "illum/render/integrator.h"
@@ -36,11 +37,14 @@ public:
     VolPathIntegrator(const Scene& scene, int max_depth, bool caustics_by_light_tracing = false)
         : Integrator(scene), max_depth_(max_depth), caustics_by_light_tracing_(caustics_by_light_tracing) {
         for (const auto& l : scene.lights) point_lights_ = point_lights_ || l->position().has_value();
+        entry_media_ = has_entry_media(scene);
     }
     Radiance3 estimate(const Ray& camera_ray, ThreadContext& tc) const override;
 
     // Whether the scene has media at all: without, "volpath" renders with the surface path tracer.
     static bool needed(const Scene& scene);
+    // Whether some material encloses a medium evaluated where a path enters it (textured subsurface).
+    static bool has_entry_media(const Scene& scene);
 
     // The state of one path: throughput β and the rescaled densities r_u, r_l (per channel, relative to the
     // sampling channel's), the sampling channel and the generator for the tracking's tentative collisions.
@@ -50,6 +54,21 @@ public:
         PCG32 rng;
         HomogeneousCache media;
         float time = 0; // the camera sample's time (motion blur): every ray of the path has it
+        // The media of textured subsurface shapes (entry_medium.h): 0 the path's, evaluated where it entered
+        // the shape; 1 a shadow ray's, from the boundary into the shape. Made when first needed.
+        EntryMediumSlots<2> entry_media;
+        // The medium a ray leaving `hit` travels in, given next = hit.medium_for(its direction), evaluated
+        // into slot `slot`.
+        const Medium* enter(const Medium* next, const SurfaceHit& hit, const SampledWavelengths& lambda,
+                            int slot) {
+            if (!next || !next->evaluated_at_entry()) [[likely]]
+                return next;
+            EntryMedium* m = entry_media.get(slot);
+            bool fresh = false;
+            const Medium* r = entered_medium(next, hit, lambda, m, &fresh);
+            if (fresh) media.forget(m);
+            return r;
+        }
     };
     // Where next-event estimation starts: a surface point with its BSDF, or a point in a medium with its
     // phase function (then `hit` and `bsdf` are null).
@@ -104,6 +123,7 @@ private:
     int max_depth_;
     bool caustics_by_light_tracing_;
     bool point_lights_ = false; // whether the scene has point or spot lights (equiangular sampling)
+    bool entry_media_ = false;  // has_entry_media: else rays need not ask PathState::enter
 };
 
 } // namespace illum

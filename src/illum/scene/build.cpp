@@ -138,7 +138,8 @@ private:
             if (fresh)
                 scene_->medium_reports.push_back(
                     {fmt::format("(subsurface material of the shape at {})", s.loc.to_string()),
-                     "homogeneous",
+                     material->interior()->evaluated_at_entry() ? "homogeneous, textured (at each entry)"
+                                                                : "homogeneous",
                      sizeof(HomogeneousMedium),
                      {}});
             scene_->medium_reports[it->second].bounded_by.push_back(
