@@ -17,12 +17,6 @@ PowerLightSampler::PowerLightSampler(const std::vector<const Light*>& lights) : 
     for (std::size_t i = 0; i < lights_.size(); ++i) pmf_[i] = table_.pmf(int(i));
 }
 
-const Light* PowerLightSampler::sample(float u, float* pmf) const {
-    if (lights_.empty()) return nullptr;
-    int i = table_.sample(u, pmf);
-    return lights_[i];
-}
-
 float PowerLightSampler::pmf(const Light* light) const {
     if (!light || light->index >= pmf_.size()) return 0;
     return pmf_[light->index];

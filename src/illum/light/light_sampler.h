@@ -16,7 +16,10 @@ public:
     explicit PowerLightSampler(const std::vector<const Light*>& lights);
 
     // The light and its probability; nullptr when the scene has no light.
-    const Light* sample(float u, float* pmf) const;
+    const Light* sample(float u, float* pmf) const {
+        if (lights_.empty()) return nullptr;
+        return lights_[std::size_t(table_.sample(u, pmf))];
+    }
     float pmf(const Light* light) const;
     bool empty() const { return lights_.empty(); }
 

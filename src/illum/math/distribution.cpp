@@ -162,23 +162,4 @@ AliasTable::AliasTable(std::span<const float> weights) : bins_(weights.size()) {
     for (uint32_t l : small) bins_[l].q = bins_[l].p > 0 ? 1.0f : 0.0f;
 }
 
-int AliasTable::sample(float u, float* pmf, float* u_remapped) const {
-    const int n = size();
-    if (n == 0) {
-        if (pmf) *pmf = 0;
-        return 0;
-    }
-    const double un = double(clamp_unit(u)) * n;
-    const int i = std::min(int(un), n - 1);
-    const double up = un - i;
-    const Bin& b = bins_[size_t(i)];
-    const bool own = up < b.q;
-    const int out = own ? i : int(b.alias);
-    if (pmf) *pmf = bins_[size_t(out)].p;
-    // (The divisions only when asked: picking a light needs none.)
-    if (u_remapped)
-        *u_remapped = std::min(float(own ? up / b.q : (up - b.q) / (1.0 - b.q)), kOneMinusEpsilon);
-    return out;
-}
-
 } // namespace illum

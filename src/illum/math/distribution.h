@@ -2,6 +2,7 @@
 // alias table for O(1) discrete sampling. Construction allocates; sampling and evaluation do not.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -80,12 +81,14 @@ public:
     explicit AliasTable(std::span<const float> weights);
 
     // Outcome i with probability *pmf; *u_remapped is uniform in [0, 1) and independent of the outcome.
+    // (Inline: next-event estimation picks a light with it at every vertex.)
     int sample(float u, float* pmf = nullptr, float* u_remapped = nullptr) const;
     float pmf(int i) const { return bins_[size_t(i)].p; }
     int size() const { return int(bins_.size()); }
     bool is_degenerate() const { return degenerate_; }
 
 private:
+    static constexpr float kBelowOne = 0x1.fffffep-1f; // the largest float below 1
     struct Bin {
         float q = 1;        // probability of keeping the bin's own outcome
         float p = 0;        // the outcome's probability
@@ -94,5 +97,23 @@ private:
     std::vector<Bin> bins_;
     bool degenerate_ = true;
 };
+
+inline int AliasTable::sample(float u, float* pmf, float* u_remapped) const {
+    const int n = size();
+    if (n == 0) {
+        if (pmf) *pmf = 0;
+        return 0;
+    }
+    const double un = double(std::clamp(u, 0.0f, kBelowOne)) * n;
+    const int i = std::min(int(un), n - 1);
+    const double up = un - i;
+    const Bin& b = bins_[size_t(i)];
+    const bool own = up < b.q;
+    const int out = own ? i : int(b.alias);
+    if (pmf) *pmf = bins_[size_t(out)].p;
+    // (The divisions only when asked: picking a light needs none.)
+    if (u_remapped) *u_remapped = std::min(float(own ? up / b.q : (up - b.q) / (1.0 - b.q)), kBelowOne);
+    return out;
+}
 
 } // namespace illum

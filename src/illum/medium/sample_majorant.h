@@ -41,28 +41,26 @@ SampledSpectrum sample_t_maj(Ray ray, float tmax, float u, PCG32& rng, const Sam
     tmax *= len;
     ray.d = ray.d / len;
     // A homogeneous medium's properties are the same at every collision: evaluated once, its σ_t the
-    // majorant.
+    // majorant of the one segment (0, tmax), walked without a majorant iterator.
     const bool homogeneous = ray.medium->is_homogeneous();
     MediumProperties uniform;
-    MajorantIterator it;
-    if (homogeneous) {
+    if (homogeneous)
         uniform = cache ? cache->get(*ray.medium, lambda) : ray.medium->sample_point(ray.o, lambda);
-        it = MajorantIterator::single(0, tmax, uniform.sigma_a + uniform.sigma_s);
-    } else {
-        it = ray.medium->sample_ray(ray, tmax, lambda);
-    }
     SampledSpectrum t_maj(1.0f);
-    while (std::optional<MajorantSegment> seg = it.next()) {
-        const SampledSpectrum& sigma_maj = seg->sigma_maj;
-        float t1 = std::min(seg->t1, FLT_MAX);
+    // One majorant segment (t0, t1): false if the walk ended in it (t_maj is then the result).
+    auto walk = [&](float t0, float t1, const SampledSpectrum& sigma_maj) {
+        t1 = std::min(t1, FLT_MAX);
         // An infinite density (a degenerate input) is opaque: nothing passes, and no step could be taken.
-        if (!std::isfinite(sigma_maj[channel])) return SampledSpectrum(0.0f);
+        if (!std::isfinite(sigma_maj[channel])) {
+            t_maj = SampledSpectrum(0.0f);
+            return false;
+        }
         if (sigma_maj[channel] == 0) {
             // No collisions in this channel: the segment only attenuates the others.
-            t_maj *= exp(-sigma_maj * (t1 - seg->t0));
-            continue;
+            t_maj *= exp(-sigma_maj * (t1 - t0));
+            return true;
         }
-        float t = seg->t0;
+        float t = t0;
         for (;;) {
             // -ln(1 - u): u is a float in [0, 1), so 1 - u loses at most 2^-25 (nothing for u >= 1/2), and
             // logf is several times cheaper than log1pf.
@@ -70,16 +68,25 @@ SampledSpectrum sample_t_maj(Ray ray, float tmax, float u, PCG32& rng, const Sam
             u = rng.uniform_float();
             if (t + step >= t1) {
                 t_maj *= exp(-sigma_maj * (t1 - t));
-                break;
+                return true;
             }
             t += step;
             t_maj *= exp(-sigma_maj * step);
             Point3f p = ray(t);
-            if (!callback(p, homogeneous ? uniform : ray.medium->sample_point(p, lambda), sigma_maj, t_maj))
-                return SampledSpectrum(1.0f);
+            if (!callback(p, homogeneous ? uniform : ray.medium->sample_point(p, lambda), sigma_maj, t_maj)) {
+                t_maj = SampledSpectrum(1.0f);
+                return false;
+            }
             t_maj = SampledSpectrum(1.0f);
         }
+    };
+    if (homogeneous) {
+        if (0 < tmax) walk(0, tmax, uniform.sigma_a + uniform.sigma_s); // (an empty segment: T_maj = 1)
+        return t_maj;
     }
+    MajorantIterator it = ray.medium->sample_ray(ray, tmax, lambda);
+    while (std::optional<MajorantSegment> seg = it.next())
+        if (!walk(seg->t0, seg->t1, seg->sigma_maj)) break;
     return t_maj;
 }
 
