@@ -10,10 +10,7 @@ SampledSpectrum SubsurfaceParam::at(const TextureEvalContext& ctx, const Sampled
                                     UpliftKind kind) const {
     if (spectrum && lambda.spectral()) return spectrum->sample(lambda);
     Color3 c = texture->evaluate(ctx);
-    if (!lambda.spectral()) return SampledSpectrum(c);
-    const RGBColorSpace& cs = *lambda.color_space;
-    return sample(kind == UpliftKind::Albedo ? uplift_albedo_poly(c, cs) : uplift_unbounded_poly(c, cs),
-                  lambda);
+    return kind == UpliftKind::Albedo ? uplift_albedo(c, lambda) : uplift_unbounded(c, lambda);
 }
 
 std::unique_ptr<TexturedSubsurfaceMedium>
