@@ -71,16 +71,17 @@ private:
 
 // The medium a ray that leaves `hit` travels in, given next = hit.medium_for(direction): next itself, unless
 // it is evaluated at entry; then the medium of the ray that found the hit if that was evaluated from next
-// (the path is inside already), else next evaluated at the hit into *slot (*fresh is set then: a cache of
-// the slot's properties must forget them).
-inline const Medium* entered_medium(const Medium* next, const SurfaceHit& hit,
-                                    const SampledWavelengths& lambda, EntryMedium* slot,
-                                    bool* fresh = nullptr) {
+// (the path is inside already), else next evaluated at the hit into the storage `make_slot()` returns
+// (asked only then, so a caller's storage is made, and a cache of its properties forgotten, only when it
+// is filled).
+template <class MakeSlot>
+const Medium* entered_medium(const Medium* next, const SurfaceHit& hit, const SampledWavelengths& lambda,
+                             MakeSlot&& make_slot) {
     if (!next || !next->evaluated_at_entry()) [[likely]]
         return next;
     if (hit.medium && hit.medium->entered_from() == next) return hit.medium;
+    EntryMedium* slot = make_slot();
     static_cast<const EntryEvaluatedMedium*>(next)->evaluate(hit, lambda, slot);
-    if (fresh) *fresh = true;
     return slot;
 }
 

@@ -141,10 +141,8 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
     // Into a textured subsurface shape: its medium evaluated where the particle enters (entry_medium.h).
     std::optional<EntryMedium> entry;
     auto enter = [&](const SurfaceHit& hit) {
-        if (!ray.medium || !ray.medium->evaluated_at_entry()) [[likely]]
-            return;
-        if (!entry) entry.emplace();
-        ray.medium = entered_medium(ray.medium, hit, tc.lambda, &*entry);
+        ray.medium =
+            entered_medium(ray.medium, hit, tc.lambda, [&] { return entry ? &*entry : &entry.emplace(); });
     };
     for (int depth = 0, crossings = 0; (max_depth_ < 0 || depth < max_depth_) && crossings < 1024;) {
         SurfaceHit hit;

@@ -25,10 +25,7 @@ TransportMode other(TransportMode m) {
 // subsurface shape's medium is evaluated where this subpath enters it (entry_medium.h), in the thread's
 // arena, which lives as long as the sample's subpaths.
 const Medium* walk_into(const PathContext& ctx, const Medium* next, const SurfaceHit& hit) {
-    if (!next || !next->evaluated_at_entry()) [[likely]]
-        return next;
-    if (hit.medium && hit.medium->entered_from() == next) return hit.medium;
-    return entered_medium(next, hit, ctx.tc.lambda, ctx.tc.arena.make<EntryMedium>());
+    return entered_medium(next, hit, ctx.tc.lambda, [&] { return ctx.tc.arena.make<EntryMedium>(); });
 }
 
 } // namespace
@@ -339,8 +336,8 @@ SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVerte
     ray.time = ctx.time;
     // From a textured subsurface shape's boundary into it: evaluated at a, unless a's subpath is inside.
     std::optional<EntryMedium> entry;
-    if (a.type == VertexType::Surface && ray.medium && ray.medium->evaluated_at_entry()) [[unlikely]]
-        ray.medium = entered_medium(ray.medium, a.hit, ctx.tc.lambda, &entry.emplace());
+    if (a.type == VertexType::Surface)
+        ray.medium = entered_medium(ray.medium, a.hit, ctx.tc.lambda, [&] { return &entry.emplace(); });
     SampledSpectrum r_u(1.0f), r_l(1.0f);
     SampledSpectrum t =
         shadow_transmittance(ctx.scene, ray, target, ch, ctx.rng, ctx.tc.lambda, &r_u, &r_l, &ctx.tc.rays);

@@ -61,13 +61,11 @@ public:
         // into slot `slot`.
         const Medium* enter(const Medium* next, const SurfaceHit& hit, const SampledWavelengths& lambda,
                             int slot) {
-            if (!next || !next->evaluated_at_entry()) [[likely]]
-                return next;
-            EntryMedium* m = entry_media.get(slot);
-            bool fresh = false;
-            const Medium* r = entered_medium(next, hit, lambda, m, &fresh);
-            if (fresh) media.forget(m);
-            return r;
+            return entered_medium(next, hit, lambda, [&] {
+                EntryMedium* m = entry_media.get(slot);
+                media.forget(m); // re-evaluated in place
+                return m;
+            });
         }
     };
     // Where next-event estimation starts: a surface point with its BSDF, or a point in a medium with its
