@@ -753,9 +753,9 @@ bool Accelerator::medium_beyond(const Found& found, const Ray& ray, const Medium
         // d · M^-T n_local = M^-1 d · n_local.
         Ray local = ray;
         if (instanced) {
-            const Transform& w = records_[rh.hit.instID[0]].world_from_instance;
-            local.o = w.inverse()(ray.o);
-            local.d = w.inverse()(ray.d);
+            const Transform instance_from_world = records_[rh.hit.instID[0]].world_from_instance.inverse();
+            local.o = instance_from_world(ray.o);
+            local.d = instance_from_world(ray.d);
         }
         bool along = rec.kind == Kind::Mesh ? dot(local.d, rec.mesh->geometric_normal(rh.hit.primID)) > 0
                                             : rec.shape->leaves_along_normal(rh.ray.tfar, local);
