@@ -3,9 +3,9 @@
 #pragma once
 
 #include <cmath>
-#include <functional>
 #include <filesystem>
 #include <fmt/format.h>
+#include <functional>
 #include <gtest/gtest.h>
 #include <string>
 
@@ -31,6 +31,20 @@ struct RenderSetup {
     std::string sampler = "sobol";
     bool spectral = false;
 };
+
+// An integrator test's setup: the independent sampler (samples independent of each other, as the tests'
+// variance estimates assume) and, unless given, seed 7.
+inline RenderSetup independent_setup(const std::string& integrator, int spp, bool spectral = false,
+                                     int max_depth = -2, std::uint64_t seed = 7) {
+    RenderSetup s;
+    s.integrator = integrator;
+    s.spp = spp;
+    s.spectral = spectral;
+    s.max_depth = max_depth;
+    s.sampler = "independent";
+    s.seed = seed;
+    return s;
+}
 
 inline RenderResult render_pbrt(const std::string& text, const RenderSetup& setup = {}) {
     SceneDesc desc = parse_pbrt_string(text, "<test>", ".");

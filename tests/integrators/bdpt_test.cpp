@@ -19,14 +19,7 @@ using test::RenderSetup;
 constexpr double kSigmas = 4.5;
 
 RenderSetup bdpt(int spp, int max_depth = -2, bool spectral = false) {
-    RenderSetup s;
-    s.integrator = "bdpt";
-    s.spp = spp;
-    s.max_depth = max_depth;
-    s.spectral = spectral;
-    s.sampler = "independent";
-    s.seed = 7;
-    return s;
+    return test::independent_setup("bdpt", spp, spectral, max_depth);
 }
 
 void expect_channels(const RenderResult& r, const double expected[3], const std::string& what,

@@ -20,13 +20,7 @@ using test::RenderSetup;
 constexpr double kSigmas = 4.5;
 
 RenderSetup volpath(int spp, bool spectral, std::uint64_t seed = 7) {
-    RenderSetup s;
-    s.integrator = "volpath";
-    s.spp = spp;
-    s.spectral = spectral;
-    s.sampler = "independent";
-    s.seed = seed;
-    return s;
+    return test::independent_setup("volpath", spp, spectral, -2, seed);
 }
 
 // A subsurface sphere (its pole along y: v < 1/2, the lower hemisphere, is a checkerboard's "tex1" with

@@ -171,13 +171,7 @@ TEST(LightVertexGrid, FindsExactlyThePointsWithinTheRadius) {
 }
 
 RenderSetup vcm(int spp, int max_depth = -2, std::uint64_t seed = 7) {
-    RenderSetup s;
-    s.integrator = "vcm";
-    s.spp = spp;
-    s.max_depth = max_depth;
-    s.sampler = "independent";
-    s.seed = seed;
-    return s;
+    return test::independent_setup("vcm", spp, false, max_depth, seed);
 }
 
 // The scene text with its Integrator directive replaced by vcm's with `params`.

@@ -55,13 +55,7 @@ AttributeEnd
 }
 
 RenderSetup volpath(int spp, bool spectral = false) {
-    RenderSetup s;
-    s.integrator = "volpath";
-    s.spp = spp;
-    s.spectral = spectral;
-    s.sampler = "independent";
-    s.seed = 7;
-    return s;
+    return test::independent_setup("volpath", spp, spectral);
 }
 
 // σ_s = 0: a ray through depth d keeps exp(-σ_a d) of the light behind (per channel, chromatic σ_a).
