@@ -48,6 +48,7 @@ int strategy_index(int s, int t) {
 // The subpaths' storage, once per thread: maxdepth + 2 camera and maxdepth + 1 light vertices.
 struct Subpaths {
     std::vector<PathVertex> camera, light;
+    PathVertex sampled; // the endpoint a strategy samples (s = 1: a light point, t = 1: the camera's)
 };
 
 float remap0(float f) { return f != 0 ? f : 1.0f; }
@@ -57,61 +58,55 @@ float remap0(float f) { return f != 0 ? f : 1.0f; }
 // where the ratios follow from the vertices' densities: moving the connection one vertex towards the
 // camera multiplies the ratio by pdf_rev / pdf_fwd of the camera vertex passed, and likewise towards the
 // light. The reverse densities at the connection's two ends and their predecessors depend on the
-// strategy; they are set here and restored afterwards.
-float mis_weight(const PathContext& ctx, PathVertex* lv, PathVertex* cv, int s, int t) {
+// strategy: they are computed here and used in place of the stored ones (the subpaths are not written).
+// `sampled`, when given, is the strategy's own endpoint: the light point of s = 1 (in lv[0]'s place) or
+// the camera point of t = 1 (in cv[0]'s place).
+float mis_weight(const PathContext& ctx, const PathVertex* lv, const PathVertex* cv, int s, int t,
+                 const PathVertex* sampled) {
     if (s + t == 2) return 1;
-    PathVertex* qs = s > 0 ? &lv[s - 1] : nullptr;
-    PathVertex* pt = t > 0 ? &cv[t - 1] : nullptr;
-    PathVertex* qs_m = s > 1 ? &lv[s - 2] : nullptr;
-    PathVertex* pt_m = t > 1 ? &cv[t - 2] : nullptr;
+    const PathVertex* l0 = s == 1 && sampled ? sampled : lv;
+    const PathVertex* qs = s > 0 ? (s == 1 ? l0 : &lv[s - 1]) : nullptr;
+    const PathVertex* pt = t > 0 ? (t == 1 && sampled ? sampled : &cv[t - 1]) : nullptr;
+    const PathVertex* qs_m = s > 1 ? &lv[s - 2] : nullptr;
+    const PathVertex* pt_m = t > 1 ? &cv[t - 2] : nullptr;
 
-    // The new values, from the vertices as they are (the connection's ends are not delta).
+    // The reverse densities next to the connection, from the vertices as they are (the connection's ends
+    // are not delta).
     float pt_rev = 0, pt_m_rev = 0, qs_rev = 0, qs_m_rev = 0;
     if (pt) pt_rev = s > 0 ? vertex_pdf(ctx, *qs, qs_m, *pt) : pdf_light_origin(ctx, *pt, *pt_m);
     if (pt_m) pt_m_rev = s > 0 ? vertex_pdf(ctx, *pt, qs, *pt_m) : pdf_light(ctx, *pt, *pt_m);
     if (qs) qs_rev = vertex_pdf(ctx, *pt, pt_m, *qs);
     if (qs_m) qs_m_rev = vertex_pdf(ctx, *qs, pt, *qs_m);
 
-    struct Saved {
-        PathVertex* v;
-        float pdf_rev;
-        bool delta;
-    } saved[4] = {{pt, 0, false}, {pt_m, 0, false}, {qs, 0, false}, {qs_m, 0, false}};
-    for (Saved& sv : saved)
-        if (sv.v) sv.pdf_rev = sv.v->pdf_rev, sv.delta = sv.v->delta;
-    if (pt) pt->pdf_rev = pt_rev, pt->delta = false;
-    if (pt_m) pt_m->pdf_rev = pt_m_rev;
-    if (qs) qs->pdf_rev = qs_rev, qs->delta = false;
-    if (qs_m) qs_m->pdf_rev = qs_m_rev;
-
     float sum = 0, ri = 1;
     for (int i = t - 1; i > 0; --i) {
-        ri *= remap0(cv[i].pdf_rev) / remap0(cv[i].pdf_fwd);
-        if (!cv[i].delta && !cv[i - 1].delta) sum += ri;
+        const float rev = i == t - 1 ? pt_rev : (i == t - 2 ? pt_m_rev : cv[i].pdf_rev);
+        ri *= remap0(rev) / remap0(cv[i].pdf_fwd);
+        const bool delta = i == t - 1 ? false : cv[i].delta;
+        if (!delta && !cv[i - 1].delta) sum += ri;
     }
     ri = 1;
     for (int i = s - 1; i >= 0; --i) {
-        ri *= remap0(lv[i].pdf_rev) / remap0(lv[i].pdf_fwd);
-        bool delta_before = i > 0 ? lv[i - 1].delta : lv[0].is_delta_light();
-        if (!lv[i].delta && !delta_before) sum += ri;
+        const PathVertex& v = i == 0 ? *l0 : lv[i];
+        const float rev = i == s - 1 ? qs_rev : (i == s - 2 ? qs_m_rev : v.pdf_rev);
+        ri *= remap0(rev) / remap0(v.pdf_fwd);
+        const bool delta = i == s - 1 ? false : v.delta;
+        const bool delta_before = i > 0 ? (i == 1 ? l0->delta : lv[i - 1].delta) : l0->is_delta_light();
+        if (!delta && !delta_before) sum += ri;
     }
-
-    for (Saved& sv : saved)
-        if (sv.v) sv.v->pdf_rev = sv.pdf_rev, sv.v->delta = sv.delta;
     return 1 / (1 + sum);
 }
 
 // The contribution of strategy (s, t), MIS-weighted, and its weight in *weight. t = 1 sets *p_raster (a
-// splat).
-SampledSpectrum connect(const PathContext& ctx, PathVertex* lv, PathVertex* cv, int s, int t, int ch,
-                        bool camera_delta, Point2f* p_raster, float* weight) {
+// splat). `sampled` is scratch for the endpoint that s = 1 and t = 1 sample.
+SampledSpectrum connect(const PathContext& ctx, const PathVertex* lv, const PathVertex* cv, int s, int t,
+                        int ch, bool camera_delta, PathVertex* sampled, Point2f* p_raster, float* weight) {
     const Scene& scene = ctx.scene;
     Sampler& sampler = ctx.tc.sampler;
     // A light vertex at infinity ends the camera subpath; only s = 0 uses it.
     if (t > 1 && s != 0 && cv[t - 1].type == VertexType::Light) return SampledSpectrum(0.0f);
 
     SampledSpectrum l(0.0f);
-    PathVertex sampled;
     bool have_sampled = false;
     if (s == 0) {
         const PathVertex& pt = cv[t - 1];
@@ -123,20 +118,26 @@ SampledSpectrum connect(const PathContext& ctx, PathVertex* lv, PathVertex* cv, 
         std::optional<CameraWiSample> cs = scene.camera_sample_wi(qs.p, u, ctx.time);
         if (!cs) return SampledSpectrum(0.0f);
         *p_raster = cs->p_raster;
-        sampled.type = VertexType::Camera;
-        sampled.p = cs->p_lens;
-        sampled.medium = scene.camera_medium;
-        sampled.beta = SampledSpectrum((cs->we / cs->pdf).value);
+        // Every field a camera vertex reads (the scratch vertex may hold a light point from before).
+        sampled->type = VertexType::Camera;
+        sampled->delta = false;
+        sampled->p = cs->p_lens;
+        sampled->p_error = Vector3f{};
+        sampled->ng = sampled->ns = Normal3f{};
+        sampled->medium = scene.camera_medium;
+        sampled->light = nullptr;
+        sampled->pdf_fwd = sampled->pdf_rev = 0;
+        sampled->beta = SampledSpectrum((cs->we / cs->pdf).value);
         have_sampled = true;
-        l = qs.beta * vertex_f(qs, sampled, TransportMode::Importance) * sampled.beta;
+        l = qs.beta * vertex_f(qs, *sampled, TransportMode::Importance) * sampled->beta;
         if (qs.on_surface()) l *= std::abs(dot(cs->wi, Vector3f(qs.ns)));
-        if (!l.is_black()) l *= connection_transmittance(ctx, qs, sampled, ch);
+        if (!l.is_black()) l *= connection_transmittance(ctx, qs, *sampled, ch);
     } else if (s == 1) {
         const PathVertex& pt = cv[t - 1];
         if (!pt.is_connectible()) return SampledSpectrum(0.0f);
         float u_light = sampler.get_1d();
         Point2f u = sampler.get_2d();
-        if (!connect_sampled_light(ctx, pt, u_light, u, ch, &sampled, &l)) return SampledSpectrum(0.0f);
+        if (!connect_sampled_light(ctx, pt, u_light, u, ch, sampled, &l)) return SampledSpectrum(0.0f);
         have_sampled = true;
     } else {
         const PathVertex& qs = lv[s - 1];
@@ -149,16 +150,7 @@ SampledSpectrum connect(const PathContext& ctx, PathVertex* lv, PathVertex* cv, 
     if (l.is_black()) return l;
 
     // The strategy's sampled endpoint stands in for the subpath's own while the weight is computed.
-    float w;
-    if (have_sampled) {
-        PathVertex& slot = s == 1 ? lv[0] : cv[0];
-        PathVertex keep = slot;
-        slot = sampled;
-        w = mis_weight(ctx, lv, cv, s, t);
-        slot = keep;
-    } else {
-        w = mis_weight(ctx, lv, cv, s, t);
-    }
+    const float w = mis_weight(ctx, lv, cv, s, t, have_sampled ? sampled : nullptr);
     *weight = w;
     return l * w;
 }
@@ -279,7 +271,8 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
                 if ((s == 1 && t == 1) || depth < 0 || depth > max_depth) continue;
                 Point2f p_raster;
                 float w = 0;
-                SampledSpectrum c = connect(ctx, lv, cv, s, t, ch_camera, camera_delta, &p_raster, &w);
+                SampledSpectrum c =
+                    connect(ctx, lv, cv, s, t, ch_camera, camera_delta, &sp.sampled, &p_raster, &w);
                 if (c.is_black()) continue;
                 if (!c.is_finite() || c.has_negative()) {
                     ++out.dropped;

@@ -186,7 +186,9 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
         if (beta.is_black() || !beta.is_finite()) break;
         PathVertex& v = path[n];
         PathVertex& prev = path[n - 1];
-        SurfaceHit hit;
+        // The hit is found in the vertex it may become (a medium vertex made first overwrites it).
+        SurfaceHit& hit = v.hit;
+        hit = SurfaceHit{};
         ++tc.rays;
         bool found = ctx.scene.intersect(ray, &hit);
         if (ray.medium) {
@@ -274,9 +276,12 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
             ++crossings;
             continue;
         }
-        v = PathVertex{};
+        // Every field a surface vertex reads (the hit is in place already).
         v.type = VertexType::Surface;
-        v.hit = hit;
+        v.delta = false;
+        v.pdf_rev = 0;
+        v.medium = nullptr;
+        v.light = nullptr;
         v.bsdf = bsdf;
         v.p = hit.p;
         v.p_error = hit.p_error;
@@ -368,11 +373,16 @@ bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u
                                                            : LightSampleContext(pt.p, {}, {}, ctx.time);
     std::optional<LightLiSample> ls = light->sample_li(lc, u, ctx.tc.lambda);
     if (!ls || ls->biradiance.s.is_black() || !(ls->pdf.value > 0)) return false;
+    // Every field a light vertex reads: *sampled may be scratch that held another endpoint.
     sampled->type = VertexType::Light;
+    sampled->delta = false;
     sampled->light = light;
     sampled->medium = light->medium;
+    sampled->pdf_rev = 0;
     if (ls->at_infinity) {
         sampled->p = pt.p + ls->wi * std::max(2 * ctx.scene_radius, 1.0f);
+        sampled->p_error = Vector3f{};
+        sampled->ng = sampled->ns = Normal3f{};
     } else {
         sampled->p = ls->p_light;
         sampled->p_error = ls->p_light_error;
