@@ -71,12 +71,20 @@ float mis_weight(const PathContext& ctx, const PathVertex* lv, const PathVertex*
     const PathVertex* pt_m = t > 1 ? &cv[t - 2] : nullptr;
 
     // The reverse densities next to the connection, from the vertices as they are (the connection's ends
-    // are not delta).
+    // are not delta). Each needs the connection's direction; a vertex of a walk already holds the one
+    // towards its predecessor (wo).
     float pt_rev = 0, pt_m_rev = 0, qs_rev = 0, qs_m_rev = 0;
-    if (pt) pt_rev = s > 0 ? vertex_pdf(ctx, *qs, qs_m, *pt) : pdf_light_origin(ctx, *pt, *pt_m);
-    if (pt_m) pt_m_rev = s > 0 ? vertex_pdf(ctx, *pt, qs, *pt_m) : pdf_light(ctx, *pt, *pt_m);
-    if (qs) qs_rev = vertex_pdf(ctx, *pt, pt_m, *qs);
-    if (qs_m) qs_m_rev = vertex_pdf(ctx, *qs, pt, *qs_m);
+    if (s == 0) {
+        pt_rev = pdf_light_origin(ctx, *pt, *pt_m);
+        pt_m_rev = pdf_light(ctx, *pt, *pt_m);
+    } else {
+        const Segment joint = segment(*pt, *qs); // from pt towards qs
+        if (!(joint.inv_d2 > 0)) return 0;
+        pt_rev = vertex_pdf(ctx, *qs, qs_m ? qs->wo : Vector3f{}, -joint.w, *pt, joint.inv_d2);
+        qs_rev = vertex_pdf(ctx, *pt, pt_m ? pt->wo : Vector3f{}, joint.w, *qs, joint.inv_d2);
+        if (pt_m) pt_m_rev = vertex_pdf(ctx, *pt, joint.w, pt->wo, *pt_m, 1 / length_squared(pt_m->p - pt->p));
+        if (qs_m) qs_m_rev = vertex_pdf(ctx, *qs, -joint.w, qs->wo, *qs_m, 1 / length_squared(qs_m->p - qs->p));
+    }
 
     float sum = 0, ri = 1;
     for (int i = t - 1; i > 0; --i) {
@@ -143,9 +151,11 @@ SampledSpectrum connect(const PathContext& ctx, const PathVertex* lv, const Path
         const PathVertex& qs = lv[s - 1];
         const PathVertex& pt = cv[t - 1];
         if (!qs.is_connectible() || !pt.is_connectible()) return SampledSpectrum(0.0f);
-        l = qs.beta * vertex_f(qs, pt, TransportMode::Importance) *
-            vertex_f(pt, qs, TransportMode::Radiance) * pt.beta;
-        if (!l.is_black()) l *= connect_g(ctx, qs, pt, ch);
+        const Segment joint = segment(qs, pt);
+        if (!(joint.inv_d2 > 0)) return SampledSpectrum(0.0f);
+        l = qs.beta * vertex_f(qs, joint.w, TransportMode::Importance) *
+            vertex_f(pt, -joint.w, TransportMode::Radiance) * pt.beta;
+        if (!l.is_black()) l *= connect_g(ctx, qs, pt, joint, ch);
     }
     if (l.is_black()) return l;
 

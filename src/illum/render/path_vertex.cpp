@@ -106,22 +106,20 @@ float pdf_light_origin(const PathContext& ctx, const PathVertex& v, const PathVe
     return ctx.scene.light_sampler.pmf(light) * pos.value;
 }
 
-float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* prev,
-                 const PathVertex& next) {
-    if (v.type == VertexType::Light) return pdf_light(ctx, v, next);
-    Vector3f wn = next.p - v.p;
-    float dn = length_squared(wn);
-    if (!(dn > 0)) return 0;
-    wn = wn / std::sqrt(dn);
-    Vector3f wp;
-    if (prev) {
-        wp = prev->p - v.p;
-        float dp = length_squared(wp);
-        if (!(dp > 0)) return 0;
-        wp = wp / std::sqrt(dp);
-    }
+Segment segment(const PathVertex& a, const PathVertex& b) {
+    Vector3f w = b.p - a.p;
+    float d2 = length_squared(w);
+    if (!(d2 > 0)) return {};
+    float inv_d2 = 1 / d2;
+    return {w * std::sqrt(inv_d2), inv_d2};
+}
+
+float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vector3f wn, const PathVertex& next,
+                 float inv_d2) {
     float pdf = 0;
     switch (v.type) {
+    case VertexType::Light:
+        return pdf_light(ctx, v, next);
     case VertexType::Camera:
         pdf = ctx.scene.camera_pdf_we(Ray{v.p, wn, kInfinity, ctx.time}).dir.value;
         break;
@@ -132,17 +130,28 @@ float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* 
         // The phase function takes the directions of travel: in along -wp, out along wn.
         pdf = v.phase.p(dot(-wp, wn));
         break;
-    case VertexType::Light:
-        break;
     }
-    return convert_density(v, pdf, next);
+    // Per unit area at next (convert_density), with the direction already at hand.
+    if (next.is_infinite_light()) return pdf;
+    if (next.on_surface()) pdf *= std::abs(dot(Vector3f(next.ng), wn));
+    return pdf * inv_d2;
 }
 
-SampledSpectrum vertex_f(const PathVertex& v, const PathVertex& next, TransportMode mode) {
-    Vector3f wi = next.p - v.p;
-    float d2 = length_squared(wi);
-    if (!(d2 > 0)) return SampledSpectrum(0.0f);
-    wi = wi / std::sqrt(d2);
+float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* prev,
+                 const PathVertex& next) {
+    if (v.type == VertexType::Light) return pdf_light(ctx, v, next);
+    Segment to_next = segment(v, next);
+    if (!(to_next.inv_d2 > 0)) return 0;
+    Vector3f wp;
+    if (prev) {
+        Segment to_prev = segment(v, *prev);
+        if (!(to_prev.inv_d2 > 0)) return 0;
+        wp = to_prev.w;
+    }
+    return vertex_pdf(ctx, v, wp, to_next.w, next, to_next.inv_d2);
+}
+
+SampledSpectrum vertex_f(const PathVertex& v, Vector3f wi, TransportMode mode) {
     switch (v.type) {
     case VertexType::Surface: {
         SampledSpectrum f = v.bsdf.f(v.wo, wi, mode).s;
@@ -154,6 +163,12 @@ SampledSpectrum vertex_f(const PathVertex& v, const PathVertex& next, TransportM
     default:
         return SampledSpectrum(0.0f);
     }
+}
+
+SampledSpectrum vertex_f(const PathVertex& v, const PathVertex& next, TransportMode mode) {
+    Segment to_next = segment(v, next);
+    if (!(to_next.inv_d2 > 0)) return SampledSpectrum(0.0f);
+    return vertex_f(v, to_next.w, mode);
 }
 
 SampledSpectrum vertex_le(const PathContext& ctx, const PathVertex& v, const PathVertex& towards) {
@@ -352,16 +367,19 @@ SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVerte
     return avg > 0 ? t / avg : SampledSpectrum(0.0f);
 }
 
-SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, int ch) {
-    Vector3f d = a.p - b.p;
-    float d2 = length_squared(d);
-    if (!(d2 > 0)) return SampledSpectrum(0.0f);
-    float g = 1 / d2;
-    d = d * std::sqrt(g);
-    if (a.on_surface()) g *= std::abs(dot(Vector3f(a.ns), d));
-    if (b.on_surface()) g *= std::abs(dot(Vector3f(b.ns), d));
+SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, const Segment& ab,
+                          int ch) {
+    float g = ab.inv_d2;
+    if (a.on_surface()) g *= std::abs(dot(Vector3f(a.ns), ab.w));
+    if (b.on_surface()) g *= std::abs(dot(Vector3f(b.ns), ab.w));
     if (!(g > 0)) return SampledSpectrum(0.0f);
     return connection_transmittance(ctx, a, b, ch) * g;
+}
+
+SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, int ch) {
+    Segment ab = segment(a, b);
+    if (!(ab.inv_d2 > 0)) return SampledSpectrum(0.0f);
+    return connect_g(ctx, a, b, ab, ch);
 }
 
 bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u_light, Point2f u,

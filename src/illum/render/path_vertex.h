@@ -89,9 +89,21 @@ float shading_normal_adjoint(const SurfaceHit& hit, Vector3f wo, Vector3f wi);
 // The density `pdf` per steradian at v of the direction towards `next`, per unit area at next (the cosine
 // there when on a surface); unchanged when next is at infinity.
 float convert_density(const PathVertex& v, float pdf, const PathVertex& next);
+// The unit direction from a to b and 1 / |b - a|² (zero when the two coincide).
+struct Segment {
+    Vector3f w;
+    float inv_d2 = 0;
+};
+Segment segment(const PathVertex& a, const PathVertex& b);
+
 // The density (area, at next) with which v, entered from prev (nullptr for the camera), samples the
 // direction towards next. Light vertices: pdf_light.
 float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* prev, const PathVertex& next);
+// The same with the directions at hand: wp towards the vertex v was entered from (unused at the camera and
+// at lights), wn towards next, both unit, and inv_d2 = 1 / |next - v|². A connection computes its
+// segment once for its two ends (v.wo is already the direction towards v's predecessor in its subpath).
+float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vector3f wn, const PathVertex& next,
+                 float inv_d2);
 // The density (area, at next) with which the light at v emits towards next.
 float pdf_light(const PathContext& ctx, const PathVertex& v, const PathVertex& next);
 // The density with which a light subpath starts at v (light selection times position; for a vertex at
@@ -102,6 +114,8 @@ float infinite_light_density(const PathContext& ctx, Vector3f w);
 // The scattering value at v from its predecessor towards next: f (with the adjoint factor in importance
 // mode) or the phase function. Excludes the cosine.
 SampledSpectrum vertex_f(const PathVertex& v, const PathVertex& next, TransportMode mode);
+// The same towards the unit direction wi.
+SampledSpectrum vertex_f(const PathVertex& v, Vector3f wi, TransportMode mode);
 // Emitted radiance from the light at v towards `towards`.
 SampledSpectrum vertex_le(const PathContext& ctx, const PathVertex& v, const PathVertex& towards);
 
@@ -131,5 +145,8 @@ bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u
 // The geometry term with transmittance: |cos_a| |cos_b| T / d² (cosines with the shading normals, only at
 // surface vertices).
 SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, int channel);
+// The same with the segment from a to b at hand.
+SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, const Segment& ab,
+                          int channel);
 
 } // namespace illum
