@@ -354,6 +354,11 @@ SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVerte
         }
     }
     ray.time = ctx.time;
+    // A scene without media and without passable surfaces: the segment is blocked or clear.
+    if (ctx.scene.media.empty() && !ctx.scene.accelerator.any_passable()) {
+        ++ctx.tc.rays;
+        return SampledSpectrum(ctx.scene.occluded(ray) ? 0.0f : 1.0f);
+    }
     // From a textured subsurface shape's boundary into it: evaluated at a, unless a's subpath is inside.
     std::optional<EntryMedium> entry;
     if (a.type == VertexType::Surface)
