@@ -193,15 +193,30 @@ print(width, height, spp, integrator)
 PY
 }
 
-# One field of a JSON file, e.g. json_field FILE rmse all.
+# One field of a JSON file, e.g. json_field FILE rmse all; "" when the file or the field is missing
+# (illum diff gives no RMSE when the sizes differ), so one missing figure does not end the comparison.
 json_field() {
     python3 - "$@" <<'PY'
 import json, sys
-value = json.load(open(sys.argv[1]))
-for key in sys.argv[2:]:
-    value = value[key]
+try:
+    value = json.load(open(sys.argv[1]))
+    for key in sys.argv[2:]:
+        value = value[key]
+except (OSError, ValueError, KeyError, TypeError):
+    value = ""
 print(value)
 PY
+}
+
+# RMSE (all channels) of an image against a reference, by illum diff; "" if it cannot be had.
+rmse_against() {
+    local image="$1" reference="$2" report="$1.diff.json"
+    if "$illum" diff --json "$image" "$reference" >"$report" 2>&1; then
+        json_field "$report" rmse all
+    else
+        echo "compare_peers.sh: illum diff $image $reference failed (see $report)" >&2
+        echo ""
+    fi
 }
 
 # Arithmetic on decimals (bash has integers only): calc 'a1 / a2' X Y. Prints "" when an operand is
@@ -222,36 +237,34 @@ calc() {
 # Empty arguments (no peak RSS without GNU time) are skipped; with none left the median is "".
 median() {
     printf '%s\n' "$@" | sort -g | awk 'NF { v[++n] = $1 } END {
-        if (n == 0) print ""; else if (n % 2) print v[(n + 1) / 2]; else printf "%.10g\n", (v[n / 2] + v[n / 2 + 1]) / 2 }'
+        if (n == 0) print ""
+        else if (n % 2) print v[(n + 1) / 2]
+        else printf "%.10g\n", (v[n / 2] + v[n / 2 + 1]) / 2 }'
 }
 
 # Runs a command in a folder, its output to a log; sets run_seconds (wall) and run_rss_kb (peak RSS,
-# empty without GNU time). Returns the command's status.
+# empty without GNU time). Returns the command's status. The wall time is taken by bash around the
+# process even when GNU time runs it, because GNU time's %e has only centiseconds.
 timed_run() {
     local folder="$1" log="$2"
     shift 2
     run_seconds=""
     run_rss_kb=""
-    local status=0
-    if [[ -n "$gnu_time" ]]; then
-        local measure="$log.time"
-        (cd "$folder" && "$gnu_time" -f "%e %M" -o "$measure" "$@") >"$log" 2>&1 || status=$?
-        if [[ $status -eq 0 ]]; then
-            # The last line: GNU time prepends "Command exited with ..." lines on failures only.
-            read -r run_seconds run_rss_kb < <(tail -n 1 "$measure")
-        fi
-    else
-        local start end
-        start="$(date +%s.%N)"
-        (cd "$folder" && "$@") >"$log" 2>&1 || status=$?
-        end="$(date +%s.%N)"
-        run_seconds="$(calc 'a2 - a1' "$start" "$end")"
-    fi
+    local status=0 start end
+    local measure="$log.time"
+    local wrapper=()
+    [[ -z "$gnu_time" ]] || wrapper=("$gnu_time" -f "%M" -o "$measure")
+    start="$(date +%s.%N)"
+    (cd "$folder" && "${wrapper[@]}" "$@") >"$log" 2>&1 || status=$?
+    end="$(date +%s.%N)"
     if [[ $status -ne 0 ]]; then
         echo "compare_peers.sh: failed (status $status): $* (in $folder); its log, $log, ends:" >&2
         tail -n 5 "$log" >&2 || true
+        return "$status"
     fi
-    return "$status"
+    run_seconds="$(calc 'a2 - a1' "$start" "$end")"
+    # GNU time writes a "Command exited with ..." line before its figures on failures only.
+    [[ -z "$gnu_time" ]] || run_rss_kb="$(tail -n 1 "$measure")"
 }
 
 # Formats: seconds to 3 decimals, KiB as MiB, rates in millions, ratios to 2 decimals; "" stays "".
@@ -265,10 +278,12 @@ fmt() {
 # hh:mm:ss.ss on long renders); falls back to the "render seconds" the Cycles script prints.
 blender_render_seconds() {
     local log="$1" stamp
-    stamp="$(grep -oE '^ ?Time: [0-9:.]+ \(Saving' "$log" | tail -n 1 | grep -oE '[0-9]+(:[0-9]+)*(\.[0-9]+)?' |
-        head -n 1 || true)"
+    stamp="$(grep -oE '^ ?Time: [0-9:.]+ \(Saving' "$log" | tail -n 1 |
+        grep -oE '[0-9]+(:[0-9]+)*(\.[0-9]+)?' | head -n 1 || true)"
     if [[ -n "$stamp" ]]; then
-        awk -v t="$stamp" 'BEGIN { n = split(t, p, ":"); s = 0; for (i = 1; i <= n; i++) s = s * 60 + p[i]; print s }'
+        awk -v t="$stamp" 'BEGIN { n = split(t, p, ":"); s = 0
+            for (i = 1; i <= n; i++) s = s * 60 + p[i]
+            print s }'
     else
         grep -oE 'cycles_cornell: render seconds [0-9.]+' "$log" | awk '{ print $4 }' | tail -n 1
     fi
@@ -282,7 +297,8 @@ pbrt_version=""
 if [[ -n "$pbrt" ]]; then
     # pbrt-v4 has no --version; it prints its banner before reading the scene, so a missing file
     # gives the banner and an error without rendering anything.
-    pbrt_version="$("$pbrt" --nthreads 1 "$out_dir/no-such-scene.pbrt" 2>/dev/null | grep -m 1 'pbrt version' || true)"
+    pbrt_version="$("$pbrt" --nthreads 1 "$out_dir/no-such-scene.pbrt" 2>/dev/null |
+        grep -m 1 'pbrt version' || true)"
     pbrt_version="${pbrt_version:-pbrt-v4 (no version printed)}"
 fi
 blender_version=""
@@ -311,22 +327,24 @@ if [[ -n "$equal_time" ]]; then
 fi
 (IFS=,; echo "${columns[*]}") >"$csv"
 
-markdown_header() {
-    local titles=("scene" "resolution" "spp" "illum s" "illum RSS MiB" "illum Msamples/s" "pbrt s"
-                  "pbrt RSS MiB" "pbrt Msamples/s" "pbrt/illum")
-    if [[ -n "$equal_time" ]]; then
-        titles+=("equal time s" "illum spp" "illum s" "illum RMSE" "pbrt spp" "pbrt s" "pbrt RMSE"
-                 "RMSE pbrt/illum")
-    fi
-    local line="|" rule="|" title
-    for title in "${titles[@]}"; do line+=" $title |"; rule+="---|"; done
-    echo "$line"
-    echo "$rule"
-}
+titles=("scene" "resolution" "spp" "illum s" "illum RSS MiB" "illum Msamples/s" "pbrt s" "pbrt RSS MiB"
+        "pbrt Msamples/s" "pbrt/illum")
+if [[ -n "$equal_time" ]]; then
+    titles+=("equal time s" "illum spp" "illum s" "illum RMSE" "pbrt spp" "pbrt s" "pbrt RMSE"
+             "RMSE pbrt/illum")
+fi
+cycles_columns=(scene resolution spp illum_rgb_s illum_rgb_render_s illum_rgb_rss_mib cycles_s cycles_render_s
+                cycles_rss_mib cycles_over_illum cycles_over_illum_render)
+cycles_titles=("scene" "resolution" "spp" "illum RGB s" "illum render s" "illum RSS MiB" "Cycles s"
+               "Cycles render s" "Cycles RSS MiB" "Cycles/illum" "Cycles/illum render")
 
 # Rows are kept as cells joined by the ASCII unit separator, which no cell holds (a comma or a tab could
 # appear in a path or collapse empty cells); empty cells are a peer that was not given or failed.
 separator=$'\x1f'
+join_cells() {
+    local IFS="$separator"
+    echo "$*"
+}
 rows=()
 cycles_row=""
 
@@ -395,11 +413,8 @@ for scene in $scenes; do
             -o "$scene_out/illum-equal-time.exr" --quiet --stats "$scene_out/illum-equal-time.json"; then
             eq_illum_spp="$(json_field "$scene_out/illum-equal-time.json" spp)"
             eq_illum_s="$run_seconds"
-            if [[ -f "$reference" ]]; then
-                "$illum" diff --json "$scene_out/illum-equal-time.exr" "$reference" \
-                    >"$scene_out/illum-equal-time.diff.json"
-                eq_illum_rmse="$(json_field "$scene_out/illum-equal-time.diff.json" rmse all)"
-            fi
+            [[ ! -f "$reference" ]] ||
+                eq_illum_rmse="$(rmse_against "$scene_out/illum-equal-time.exr" "$reference")"
         fi
         if [[ $pbrt_ok -eq 1 ]]; then
             eq_pbrt_spp="$(awk -v spp="$spp" -v s="${eq_illum_s:-$equal_time}" -v t="$pbrt_s" \
@@ -407,19 +422,16 @@ for scene in $scenes; do
             if timed_run "$folder" "$scene_out/pbrt-equal-time.log" "$pbrt" --nthreads "$threads" \
                 --spp "$eq_pbrt_spp" --quiet --outfile "$scene_out/pbrt-equal-time.exr" test.pbrt; then
                 eq_pbrt_s="$run_seconds"
-                if [[ -f "$reference" ]]; then
-                    "$illum" diff --json "$scene_out/pbrt-equal-time.exr" "$reference" \
-                        >"$scene_out/pbrt-equal-time.diff.json"
-                    eq_pbrt_rmse="$(json_field "$scene_out/pbrt-equal-time.diff.json" rmse all)"
-                fi
+                [[ ! -f "$reference" ]] ||
+                    eq_pbrt_rmse="$(rmse_against "$scene_out/pbrt-equal-time.exr" "$reference")"
             fi
         fi
         [[ -f "$reference" ]] || echo "compare_peers.sh: no reference $reference: no RMSE for $scene" >&2
-        row+=("$equal_time" "$eq_illum_spp" "$(fmt %.2f "$eq_illum_s")" "$(fmt %.5g "$eq_illum_rmse")" "$eq_pbrt_spp"
-              "$(fmt %.2f "$eq_pbrt_s")" "$(fmt %.5g "$eq_pbrt_rmse")"
+        row+=("$equal_time" "$eq_illum_spp" "$(fmt %.2f "$eq_illum_s")" "$(fmt %.5g "$eq_illum_rmse")"
+              "$eq_pbrt_spp" "$(fmt %.2f "$eq_pbrt_s")" "$(fmt %.5g "$eq_pbrt_rmse")"
               "$(fmt %.2f "$(calc 'a1 / a2' "$eq_pbrt_rmse" "$eq_illum_rmse")")")
     fi
-    rows+=("$(IFS="$separator"; echo "${row[*]}")")
+    rows+=("$(join_cells "${row[@]}")")
     (IFS=,; echo "${row[*]}") >>"$csv"
 
     # Cycles: the Cornell box only (scripts/cycles_cornell.py builds that one scene). Cycles is an RGB
@@ -455,12 +467,12 @@ for scene in $scenes; do
             c_r="$(median "${cycles_render[@]}")"
             i_s="$(median "${rgb_times[@]}")"
             i_r="$(median "${rgb_render[@]}")"
-            cycles_row="$(printf "%s$separator" "$scene" "${width}x$height" "$spp" "$(fmt %.3f "$i_s")" \
-                "$(fmt %.3f "$i_r")" "$(fmt %.1f "$(calc 'a1 / 1024' "$(median "${rgb_rss[@]}")")")" \
-                "$(fmt %.3f "$c_s")" "$(fmt %.3f "$c_r")" \
-                "$(fmt %.1f "$(calc 'a1 / 1024' "$(median "${cycles_rss[@]}")")")" \
-                "$(fmt %.2f "$(calc 'a1 / a2' "$c_s" "$i_s")")" "$(fmt %.2f "$(calc 'a1 / a2' "$c_r" "$i_r")")")"
-            cycles_row="${cycles_row%"$separator"}"
+            rgb_mib="$(calc 'a1 / 1024' "$(median "${rgb_rss[@]}")")"
+            cycles_mib="$(calc 'a1 / 1024' "$(median "${cycles_rss[@]}")")"
+            cycles_row="$(join_cells "$scene" "${width}x$height" "$spp" "$(fmt %.3f "$i_s")" \
+                "$(fmt %.3f "$i_r")" "$(fmt %.1f "$rgb_mib")" "$(fmt %.3f "$c_s")" "$(fmt %.3f "$c_r")" \
+                "$(fmt %.1f "$cycles_mib")" "$(fmt %.2f "$(calc 'a1 / a2' "$c_s" "$i_s")")" \
+                "$(fmt %.2f "$(calc 'a1 / a2' "$c_r" "$i_r")")")"
         fi
     fi
 done
@@ -468,13 +480,21 @@ done
 # ---------------------------------------------------------------------------------------------------
 # The tables.
 
-markdown_row() {
-    # awk, not "read -a": read drops a trailing empty cell.
-    awk -F "$separator" '{ line = "|"; for (i = 1; i <= NF; i++) line = line " " ($i == "" ? "-" : $i) " |"; print line }' \
-        <<<"$1"
+markdown_header() {
+    local line="|" rule="|" title
+    for title in "$@"; do line+=" $title |"; rule+="---|"; done
+    echo "$line"
+    echo "$rule"
 }
 
-markdown_header
+# awk, not "read -a", splits the cells: read drops a trailing empty cell.
+markdown_row() {
+    awk -F "$separator" '{ line = "|"
+        for (i = 1; i <= NF; i++) line = line " " ($i == "" ? "-" : $i) " |"
+        print line }' <<<"$1"
+}
+
+markdown_header "${titles[@]}"
 for row in "${rows[@]}"; do markdown_row "$row"; done
 echo
 echo "Times are the median wall time of $runs whole processes (start-up, parsing and writing the image" \
@@ -486,10 +506,9 @@ fi
 
 if [[ -n "$cycles_row" ]]; then
     cycles_csv="$out_dir/cycles.csv"
-    echo "scene,resolution,spp,illum_rgb_s,illum_rgb_render_s,illum_rgb_rss_mib,cycles_s,cycles_render_s,cycles_rss_mib,cycles_over_illum,cycles_over_illum_render" >"$cycles_csv"
+    (IFS=,; echo "${cycles_columns[*]}") >"$cycles_csv"
     echo
-    echo "| scene | resolution | spp | illum RGB s | illum render s | illum RSS MiB | Cycles s | Cycles render s | Cycles RSS MiB | Cycles/illum | Cycles/illum render |"
-    echo "|---|---|---|---|---|---|---|---|---|---|---|"
+    markdown_header "${cycles_titles[@]}"
     markdown_row "$cycles_row"
     echo "${cycles_row//"$separator"/,}" >>"$cycles_csv"
     echo

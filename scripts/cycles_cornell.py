@@ -109,6 +109,8 @@ def parse_parameters(args):
             values = [number(v) for v in values]
         elif ptype == 'string':
             values = [v.strip('"') for v in values]
+        elif ptype == 'bool':
+            values = [v.strip('"') == 'true' for v in values]
         params[name] = (ptype, values)
     return params
 
@@ -244,7 +246,7 @@ def read_pbrt(path):
             kind, params = name_and_parameters(directive, args)
             if kind != 'diffuse' or 'L' not in params or params['L'][0] != 'rgb':
                 raise SystemExit("cycles_cornell: only a diffuse area light with an rgb L is supported")
-            if param(params, 'twosided', 'false') not in ('false', False):
+            if param(params, 'twosided', False):
                 raise SystemExit("cycles_cornell: two-sided area lights are not supported")
             if 'power' in params:
                 raise SystemExit("cycles_cornell: an area light given by its power is not supported")
