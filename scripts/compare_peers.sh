@@ -38,7 +38,7 @@ Options:
   -h, --help           this text
 
 Ratios are pbrt/illum (above 1: illum is faster, or has the lower error) and Cycles/illum.
-Run it on an idle machine, e.g. `nice -n 0 scripts/compare_peers.sh --pbrt ~/pbrt-v4/build/pbrt`.
+Run it on an idle machine: the figures are only as quiet as the machine.
 EOF
 }
 
@@ -114,7 +114,7 @@ command -v python3 >/dev/null || die "python3 is needed (to read the scene heade
 
 if [[ -z "$scenes" ]]; then
     for folder in "$shared"/scenes/*/; do
-        [[ -f "$folder/test.pbrt" ]] && scenes+="$(basename "$folder") "
+        if [[ -f "$folder/test.pbrt" ]]; then scenes+="$(basename "$folder") "; fi
     done
 fi
 for scene in $scenes; do
@@ -134,11 +134,11 @@ else
     mkdir -p "$out_dir"
 fi
 
-# GNU time gives the peak RSS; without it the wall time comes from bash and the RSS columns stay empty.
+# GNU time gives the peak RSS; without it the RSS columns stay empty (the wall time is bash's anyway).
 gnu_time=/usr/bin/time
-if ! "$gnu_time" -f "%e %M" -o /dev/null true 2>/dev/null; then
-    echo "compare_peers.sh: /usr/bin/time (the Debian package 'time') is missing: timing with bash," \
-         "without peak RSS (apt-get install time to have it)" >&2
+if ! "$gnu_time" -f "%M" -o /dev/null true 2>/dev/null; then
+    echo "compare_peers.sh: /usr/bin/time (the Debian package 'time') is missing: timing with bash" \
+         "alone, without peak RSS (apt-get install time to have it)" >&2
     gnu_time=""
 fi
 
