@@ -104,8 +104,8 @@ def parse_parameters(args):
         else:
             values.append(args[i])
             i += 1
-        if ptype in ('float', 'integer', 'rgb', 'point3', 'normal', 'normal3', 'point2', 'vector3',
-                     'point', 'vector', 'normal3f', 'blackbody'):
+        if ptype in ('float', 'integer', 'rgb', 'blackbody', 'point2', 'vector2', 'point3', 'vector3',
+                     'point', 'vector', 'normal', 'normal3'):
             values = [number(v) for v in values]
         elif ptype == 'string':
             values = [v.strip('"') for v in values]
