@@ -16,6 +16,7 @@ namespace {
 struct DiffArgs {
     std::string image, reference;
     bool json = false;
+    double trim = kTrimFraction;
 };
 
 nlohmann::json to_json(const ErrorStats& s) {
@@ -26,7 +27,7 @@ void run(const DiffArgs& args) {
     Image a = read_image(args.image), b = read_image(args.reference);
     // Pixels with an Inf or NaN are left out (and counted): one of them would turn every figure into Inf
     // or NaN and hide how the rest of the image compares.
-    const FiniteComparison d = compare_finite(a, b);
+    const FiniteComparison d = compare_finite(a, b, kRelativeEps, args.trim);
     if (args.json) {
         nlohmann::json j = {
             {"image", args.image},
@@ -40,6 +41,8 @@ void run(const DiffArgs& args) {
             j["rmse"] = to_json(*d.rmse);
             j["relmse"] = to_json(*d.rel_mse);
             j["mean_relative_error"] = to_json(*d.mean_relative_error);
+            j["rmse_trimmed"] = to_json(*d.rmse_trimmed);
+            j["trimmed_pixels"] = d.trimmed;
         }
         fmt::print("{}\n", j.dump(2));
         return;
@@ -63,6 +66,7 @@ void run(const DiffArgs& args) {
         row("RMSE", *d.rmse, "{:>12.5g}");
         row("relMSE", *d.rel_mse, "{:>12.5g}");
         row("mean relative error", *d.mean_relative_error, "{:>12.5g}");
+        row(fmt::format("RMSE, {} px trimmed", d.trimmed), *d.rmse_trimmed, "{:>12.5g}");
     } else {
         fmt::print("(sizes differ: per-pixel metrics skipped)\n");
     }
@@ -79,6 +83,11 @@ void add_diff_command(CLI::App& app) {
     cmd->add_option("image", args->image, "Image (.exr, .pfm, .hdr, .png)")->required();
     cmd->add_option("reference", args->reference, "Reference image")->required();
     cmd->add_flag("--json", args->json, "Print the figures as JSON");
+    cmd->add_option("--trim", args->trim,
+                    "Fraction of the pixels with the largest errors (fireflies) that the trimmed RMSE leaves "
+                    "out")
+        ->check(CLI::Range(0.0, 0.5))
+        ->capture_default_str();
     cmd->callback([args] { run(*args); });
 }
 

@@ -179,7 +179,7 @@ void expect_aligned_table(const std::string& out) {
         EXPECT_EQ(line.size(), header.size()) << "misaligned row: \"" << line << "\" in\n" << out;
         ++rows;
     }
-    EXPECT_EQ(rows, 6) << out;
+    EXPECT_EQ(rows, 7) << out;
 }
 
 // Pixels with Inf/NaN are left out of `illum diff`'s figures, counted, and the table stays aligned.

@@ -33,6 +33,32 @@ TEST(Metrics, MseAndRmse) {
     EXPECT_EQ(mse(p.b, p.b).overall, 0.0);
 }
 
+// A 10 x 10 image off by 0.1 everywhere but for one firefly of 1000 and a NaN pixel: the trimmed RMSE
+// with 1.5% left out (floor(0.015 * 99) = 1 pixel) drops the firefly (the NaN pixel is not counted), leaving 0.1; with nothing left out it
+// is the plain RMSE over the finite pixels.
+TEST(Metrics, TrimmedRmseLeavesOutTheLargestErrors) {
+    Image ref(10, 10, Color3(1.0f)), a(10, 10, Color3(1.1f));
+    a(3, 4) = Color3(1000.0f);
+    a(7, 7) = Color3(std::numeric_limits<float>::quiet_NaN());
+    std::size_t trimmed = 0;
+    const ErrorStats t = trimmed_rmse(a, ref, 0.015, &trimmed);
+    EXPECT_EQ(trimmed, 1u);
+    EXPECT_NEAR(t.overall, 0.1, 1e-6);
+    EXPECT_NEAR(t.channel[1], 0.1, 1e-6);
+    const ErrorStats all = trimmed_rmse(a, ref, 0.0, &trimmed);
+    EXPECT_EQ(trimmed, 0u);
+    EXPECT_NEAR(all.overall, std::sqrt((98 * 0.01 + 999.0 * 999.0) / 99.0), 1e-3);
+    // compare_finite reports it beside the plain RMSE.
+    const FiniteComparison d = compare_finite(a, ref, kRelativeEps, 0.015);
+    ASSERT_TRUE(d.rmse_trimmed);
+    EXPECT_NEAR(d.rmse_trimmed->overall, 0.1, 1e-6);
+    EXPECT_GT(d.rmse->overall, 90.0);
+    EXPECT_EQ(trimmed_rmse(a, ref, 0.005, &trimmed).overall, all.overall); // floor(0.495) = 0 pixels
+    EXPECT_EQ(trimmed, 0u);
+    EXPECT_THROW(trimmed_rmse(a, ref, 1.0), Error);
+    EXPECT_THROW(trimmed_rmse(a, Image(5, 5), 0.01), Error);
+}
+
 TEST(Metrics, RelativeErrors) {
     Pair p;
     const ErrorStats r = rel_mse(p.a, p.b); // denominators 1^2 + 0.01

@@ -1,8 +1,10 @@
 #include "illum/image/metrics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "illum/util/error.h"
 
@@ -101,7 +103,39 @@ std::size_t count_nonfinite_pixels(const Image& image) {
     return n;
 }
 
-FiniteComparison compare_finite(const Image& a, const Image& reference, double eps) {
+ErrorStats trimmed_rmse(const Image& a, const Image& reference, double fraction, std::size_t* trimmed) {
+    require_same_size(a, reference, "trimmed rmse");
+    if (!(fraction >= 0 && fraction < 1))
+        throw Error("trimmed rmse: the fraction left out must be in [0, 1), got " + std::to_string(fraction));
+    // Each finite pixel's squared error over the channels, with its index.
+    std::vector<std::pair<double, std::size_t>> errors;
+    errors.reserve(a.pixel_count());
+    const Color3* pa = a.data();
+    const Color3* pb = reference.data();
+    for (std::size_t i = 0; i < a.pixel_count(); ++i) {
+        if (!(is_finite_pixel(pa[i]) && is_finite_pixel(pb[i]))) continue;
+        double e = 0;
+        for (int c = 0; c < 3; ++c) e += squared_error(pa[i][c], pb[i][c]);
+        errors.push_back({e, i});
+    }
+    const std::size_t drop = std::min(errors.size(), std::size_t(std::floor(fraction * double(errors.size()))));
+    if (trimmed) *trimmed = drop;
+    ErrorStats s;
+    const std::size_t keep = errors.size() - drop;
+    if (keep == 0) return s;
+    // The `keep` smallest errors first (ties broken by index, so the result does not depend on the sort).
+    std::nth_element(errors.begin(), errors.begin() + std::ptrdiff_t(keep), errors.end());
+    std::array<double, 3> sum{0, 0, 0};
+    for (std::size_t k = 0; k < keep; ++k) {
+        const std::size_t i = errors[k].second;
+        for (int c = 0; c < 3; ++c) sum[c] += squared_error(pa[i][c], pb[i][c]);
+    }
+    for (int c = 0; c < 3; ++c) s.channel[c] = std::sqrt(sum[c] / double(keep));
+    s.overall = std::sqrt((sum[0] + sum[1] + sum[2]) / (3.0 * double(keep)));
+    return s;
+}
+
+FiniteComparison compare_finite(const Image& a, const Image& reference, double eps, double trim) {
     FiniteComparison r;
     r.nonfinite = count_nonfinite_pixels(a);
     r.reference_nonfinite = count_nonfinite_pixels(reference);
@@ -121,6 +155,7 @@ FiniteComparison compare_finite(const Image& a, const Image& reference, double e
     r.mean_relative_error = mean_of(
         a, reference, "mean relative error",
         [eps](double x, double y) { return std::abs(x - y) / (std::abs(y) + eps); }, true);
+    r.rmse_trimmed = trimmed_rmse(a, reference, trim, &r.trimmed);
     return r;
 }
 

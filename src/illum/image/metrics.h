@@ -32,6 +32,16 @@ ErrorStats rel_mse(const Image& a, const Image& reference, double eps = kRelativ
 // Mean relative (absolute) error, mean of |a - b| / (|b| + eps).
 ErrorStats mean_relative_error(const Image& a, const Image& reference, double eps = kRelativeEps);
 
+// The RMSE without the pixels of the largest errors: the floor(fraction · N) pixels whose squared error
+// summed over the channels is largest are left out (pixels with an Inf or NaN in either image are left out
+// first and not counted in N). Fireflies, rare paths to emitters smaller than a pixel that neither a short
+// render nor the reference resolves, decide the plain RMSE by luck; this one says how the rest compares.
+// *trimmed (optional): how many pixels were left out for their error.
+ErrorStats trimmed_rmse(const Image& a, const Image& reference, double fraction,
+                        std::size_t* trimmed = nullptr);
+// `illum diff`'s default fraction: 16 pixels of a 128 × 128 image, none of an image under 1000 pixels.
+constexpr double kTrimFraction = 1e-3;
+
 // Per-channel means in double; `overall` is the mean of the three. Zero for an empty image.
 ErrorStats channel_means(const Image& image);
 // (mean(a) - mean(b)) / mean(b) per channel and for the overall means; the images may differ in size.
@@ -53,8 +63,11 @@ struct FiniteComparison {
     std::size_t compared = 0; // pixels in the per-pixel metrics (finite in both); 0 when sizes differ
     ErrorStats mean, reference_mean, relative_mean_difference;
     std::optional<ErrorStats> rmse, rel_mse, mean_relative_error; // when the sizes agree
+    std::optional<ErrorStats> rmse_trimmed; // trimmed_rmse(trim), when the sizes agree
+    std::size_t trimmed = 0;                // the pixels it left out for their error
 };
-FiniteComparison compare_finite(const Image& a, const Image& reference, double eps = kRelativeEps);
+FiniteComparison compare_finite(const Image& a, const Image& reference, double eps = kRelativeEps,
+                                double trim = kTrimFraction);
 
 // Box-filters the image down by an integer factor: each output pixel is the mean of a factor x factor
 // block. The width and height must be multiples of factor (throws illum::Error otherwise).

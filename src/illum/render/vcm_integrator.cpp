@@ -69,6 +69,7 @@ struct Scratch {
     std::vector<PathVertex> camera, light;
     std::vector<MisVertex> cmis, lmis, tmp_c, tmp_l;
     std::vector<float> ctail, ltail, mtail; // mtail: a merged subpath's tail
+    PathVertex sampled;                     // the light point next-event estimation samples (s = 1)
     explicit Scratch(int max_depth) {
         camera.resize(std::size_t(max_depth) + 2);
         light.resize(std::size_t(max_depth) + 1);
@@ -93,16 +94,28 @@ void set_join_densities(const PathContext& ctx, const PathVertex* lv, int s, con
     const PathVertex* pt = t > 0 ? &cv[t - 1] : nullptr;
     const PathVertex* qs_m = s > 1 ? &lv[s - 2] : nullptr;
     const PathVertex* pt_m = t > 1 ? &cv[t - 2] : nullptr;
-    if (pt) {
-        mc[t - 1].rev = s > 0 ? vertex_pdf(ctx, *qs, qs_m, *pt) : pdf_light_origin(ctx, *pt, *pt_m);
+    if (s == 0) {
+        mc[t - 1].rev = pdf_light_origin(ctx, *pt, *pt_m);
         mc[t - 1].delta = false;
+        if (pt_m) mc[t - 2].rev = pdf_light(ctx, *pt, *pt_m);
+        return;
     }
-    if (pt_m) mc[t - 2].rev = s > 0 ? vertex_pdf(ctx, *pt, qs, *pt_m) : pdf_light(ctx, *pt, *pt_m);
-    if (qs) {
-        ml[s - 1].rev = vertex_pdf(ctx, *pt, pt_m, *qs);
-        ml[s - 1].delta = false;
+    // The connection's segment once for its two ends (a walk's vertex holds the direction towards its
+    // predecessor in wo), as bdpt_integrator.cpp's mis_weight.
+    const Segment joint = segment(*pt, *qs);
+    if (!(joint.inv_d2 > 0)) {
+        // Coincident ends: no density joins them (their contribution is zero too).
+        mc[t - 1].rev = ml[s - 1].rev = 0;
+        if (pt_m) mc[t - 2].rev = 0;
+        if (qs_m) ml[s - 2].rev = 0;
+        return;
     }
-    if (qs_m) ml[s - 2].rev = vertex_pdf(ctx, *qs, pt, *qs_m);
+    mc[t - 1].rev = vertex_pdf(ctx, *qs, qs_m ? qs->wo : Vector3f{}, -joint.w, *pt, joint.inv_d2);
+    mc[t - 1].delta = false;
+    if (pt_m) mc[t - 2].rev = vertex_pdf(ctx, *pt, joint.w, pt->wo, *pt_m, 1 / length_squared(pt_m->p - pt->p));
+    ml[s - 1].rev = vertex_pdf(ctx, *pt, pt_m ? pt->wo : Vector3f{}, joint.w, *qs, joint.inv_d2);
+    ml[s - 1].delta = false;
+    if (qs_m) ml[s - 2].rev = vertex_pdf(ctx, *qs, -joint.w, qs->wo, *qs_m, 1 / length_squared(qs_m->p - qs->p));
 }
 
 class VcmRender {
@@ -308,7 +321,7 @@ SampledSpectrum VcmRender::connect(const PathContext& ctx, Scratch& sc, int s, i
     Sampler& sampler = ctx.tc.sampler;
     if (s != 0 && cv[t - 1].type == VertexType::Light) return SampledSpectrum(0.0f);
     SampledSpectrum l(0.0f);
-    PathVertex sampled;
+    PathVertex& sampled = sc.sampled;
     bool have_sampled = false;
     if (s == 0) {
         const PathVertex& pt = cv[t - 1];
@@ -325,9 +338,11 @@ SampledSpectrum VcmRender::connect(const PathContext& ctx, Scratch& sc, int s, i
         const PathVertex& qs = lv[s - 1];
         const PathVertex& pt = cv[t - 1];
         if (!qs.is_connectible() || !pt.is_connectible()) return SampledSpectrum(0.0f);
-        l = qs.beta * vertex_f(qs, pt, TransportMode::Importance) *
-            vertex_f(pt, qs, TransportMode::Radiance) * pt.beta;
-        if (!l.is_black()) l *= connect_g(ctx, qs, pt, ch);
+        const Segment joint = segment(qs, pt);
+        if (!(joint.inv_d2 > 0)) return SampledSpectrum(0.0f);
+        l = qs.beta * vertex_f(qs, joint.w, TransportMode::Importance) *
+            vertex_f(pt, -joint.w, TransportMode::Radiance) * pt.beta;
+        if (!l.is_black()) l *= connect_g(ctx, qs, pt, joint, ch);
     }
     if (l.is_black()) return l;
 
