@@ -149,21 +149,11 @@ fi
 # (1280x720, 16 spp, volpath). Only the file itself is read: the shared test.pbrt files keep their Film,
 # Sampler and Integrator there.
 scene_header() {
-    python3 - "$1" <<'PY'
-import re, sys
-text = open(sys.argv[1]).read()
-# Drop comments: a '#' outside a quoted string runs to the end of its line.
-lines = []
-for line in text.splitlines():
-    quoted = False
-    for i, ch in enumerate(line):
-        if ch == '"':
-            quoted = not quoted
-        elif ch == '#' and not quoted:
-            line = line[:i]
-            break
-    lines.append(line)
-tokens = re.findall(r'"[^"]*"|\[|\]|[^\s\[\]"]+', "\n".join(lines))
+    python3 - "$1" "$script_dir" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[2])
+from pbrt_tokens import tokenize
+tokens = tokenize(open(sys.argv[1]).read())
 # Split into directives (capitalised bare words) and their arguments.
 statements, current = [], None
 for token in tokens:

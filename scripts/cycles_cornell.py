@@ -27,7 +27,6 @@ Blender's own "Time:" line is missing from its log.
 import argparse
 import math
 import os
-import re
 import sys
 import time
 
@@ -38,24 +37,9 @@ import mathutils
 # ---------------------------------------------------------------------------------------------------------
 # A tokenizer and reader for the subset of the pbrt-v4 format the Cornell box uses.
 
-TOKEN_RE = re.compile(r'"[^"]*"|\[|\]|[^\s\[\]"]+')
-
-
-def tokenize(text):
-    """Splits pbrt text into tokens: quoted strings (kept with their quotes), brackets and bare words.
-    Comments run from '#' to the end of the line; a '#' inside a quoted string is not a comment, so the
-    line is cut only at a '#' outside quotes."""
-    tokens = []
-    for line in text.splitlines():
-        in_string = False
-        for i, ch in enumerate(line):
-            if ch == '"':
-                in_string = not in_string
-            elif ch == '#' and not in_string:
-                line = line[:i]
-                break
-        tokens.extend(TOKEN_RE.findall(line))
-    return tokens
+# The tokenizer is shared with compare_peers.sh (scripts/pbrt_tokens.py, beside this file).
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pbrt_tokens import tokenize  # noqa: E402
 
 
 def is_directive(token):
