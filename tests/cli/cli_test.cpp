@@ -33,9 +33,7 @@ int count_lines(const std::string& s) {
 
 class Cli : public testing::Test {
 protected:
-    void SetUp() override {
-        dir_ = cli_support::fresh_test_folder("cli");
-    }
+    void SetUp() override { dir_ = cli_support::fresh_test_folder("cli"); }
     void TearDown() override { fs::remove_all(dir_); }
 
     // A one-line error on stderr, `error: ...` containing `phrase`, and exit code 2.

@@ -34,8 +34,8 @@ TEST(Metrics, MseAndRmse) {
 }
 
 // A 10 x 10 image off by 0.1 everywhere but for one firefly of 1000 and a NaN pixel: the trimmed RMSE
-// with 1.5% left out (floor(0.015 * 99) = 1 pixel) drops the firefly (the NaN pixel is not counted), leaving 0.1; with nothing left out it
-// is the plain RMSE over the finite pixels.
+// with 1.5% left out (floor(0.015 * 99) = 1 pixel) drops the firefly (the NaN pixel is not counted), leaving
+// 0.1; with nothing left out it is the plain RMSE over the finite pixels.
 TEST(Metrics, TrimmedRmseLeavesOutTheLargestErrors) {
     Image ref(10, 10, Color3(1.0f)), a(10, 10, Color3(1.1f));
     a(3, 4) = Color3(1000.0f);

@@ -118,7 +118,8 @@ ErrorStats trimmed_rmse(const Image& a, const Image& reference, double fraction,
         for (int c = 0; c < 3; ++c) e += squared_error(pa[i][c], pb[i][c]);
         errors.push_back({e, i});
     }
-    const std::size_t drop = std::min(errors.size(), std::size_t(std::floor(fraction * double(errors.size()))));
+    const std::size_t drop =
+        std::min(errors.size(), std::size_t(std::floor(fraction * double(errors.size()))));
     if (trimmed) *trimmed = drop;
     ErrorStats s;
     const std::size_t keep = errors.size() - drop;

@@ -63,8 +63,8 @@ struct FiniteComparison {
     std::size_t compared = 0; // pixels in the per-pixel metrics (finite in both); 0 when sizes differ
     ErrorStats mean, reference_mean, relative_mean_difference;
     std::optional<ErrorStats> rmse, rel_mse, mean_relative_error; // when the sizes agree
-    std::optional<ErrorStats> rmse_trimmed; // trimmed_rmse(trim), when the sizes agree
-    std::size_t trimmed = 0;                // the pixels it left out for their error
+    std::optional<ErrorStats> rmse_trimmed;                       // trimmed_rmse(trim), when the sizes agree
+    std::size_t trimmed = 0;                                      // the pixels it left out for their error
 };
 FiniteComparison compare_finite(const Image& a, const Image& reference, double eps = kRelativeEps,
                                 double trim = kTrimFraction);

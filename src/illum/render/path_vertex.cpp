@@ -114,8 +114,8 @@ Segment segment(const PathVertex& a, const PathVertex& b) {
     return {w * std::sqrt(inv_d2), inv_d2};
 }
 
-float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vector3f wn, const PathVertex& next,
-                 float inv_d2) {
+float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vector3f wn,
+                 const PathVertex& next, float inv_d2) {
     float pdf = 0;
     switch (v.type) {
     case VertexType::Light:

@@ -102,8 +102,8 @@ float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* 
 // The same with the directions at hand: wp towards the vertex v was entered from (unused at the camera and
 // at lights), wn towards next, both unit, and inv_d2 = 1 / |next - v|². A connection computes its
 // segment once for its two ends (v.wo is already the direction towards v's predecessor in its subpath).
-float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vector3f wn, const PathVertex& next,
-                 float inv_d2);
+float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vector3f wn,
+                 const PathVertex& next, float inv_d2);
 // The density (area, at next) with which the light at v emits towards next.
 float pdf_light(const PathContext& ctx, const PathVertex& v, const PathVertex& next);
 // The density with which a light subpath starts at v (light selection times position; for a vertex at
