@@ -82,10 +82,8 @@ float mis_weight(const PathContext& ctx, const PathVertex* lv, const PathVertex*
         if (!(joint.inv_d2 > 0)) return 0;
         pt_rev = vertex_pdf(ctx, *qs, qs_m ? qs->wo : Vector3f{}, -joint.w, *pt, joint.inv_d2);
         qs_rev = vertex_pdf(ctx, *pt, pt_m ? pt->wo : Vector3f{}, joint.w, *qs, joint.inv_d2);
-        if (pt_m)
-            pt_m_rev = vertex_pdf(ctx, *pt, joint.w, pt->wo, *pt_m, 1 / length_squared(pt_m->p - pt->p));
-        if (qs_m)
-            qs_m_rev = vertex_pdf(ctx, *qs, -joint.w, qs->wo, *qs_m, 1 / length_squared(qs_m->p - qs->p));
+        if (pt_m) pt_m_rev = vertex_pdf(ctx, *pt, joint.w, pt->wo, *pt_m, inv_distance_squared(*pt, *pt_m));
+        if (qs_m) qs_m_rev = vertex_pdf(ctx, *qs, -joint.w, qs->wo, *qs_m, inv_distance_squared(*qs, *qs_m));
     }
 
     float sum = 0, ri = 1;

@@ -95,6 +95,11 @@ struct Segment {
     float inv_d2 = 0;
 };
 Segment segment(const PathVertex& a, const PathVertex& b);
+// 1 / |b - a|², zero when the two coincide (the densities towards a coincident vertex are zero).
+inline float inv_distance_squared(const PathVertex& a, const PathVertex& b) {
+    float d2 = length_squared(b.p - a.p);
+    return d2 > 0 ? 1 / d2 : 0.0f;
+}
 
 // The density (area, at next) with which v, entered from prev (nullptr for the camera), samples the
 // direction towards next. Light vertices: pdf_light.

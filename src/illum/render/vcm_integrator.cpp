@@ -112,12 +112,10 @@ void set_join_densities(const PathContext& ctx, const PathVertex* lv, int s, con
     }
     mc[t - 1].rev = vertex_pdf(ctx, *qs, qs_m ? qs->wo : Vector3f{}, -joint.w, *pt, joint.inv_d2);
     mc[t - 1].delta = false;
-    if (pt_m)
-        mc[t - 2].rev = vertex_pdf(ctx, *pt, joint.w, pt->wo, *pt_m, 1 / length_squared(pt_m->p - pt->p));
+    if (pt_m) mc[t - 2].rev = vertex_pdf(ctx, *pt, joint.w, pt->wo, *pt_m, inv_distance_squared(*pt, *pt_m));
     ml[s - 1].rev = vertex_pdf(ctx, *pt, pt_m ? pt->wo : Vector3f{}, joint.w, *qs, joint.inv_d2);
     ml[s - 1].delta = false;
-    if (qs_m)
-        ml[s - 2].rev = vertex_pdf(ctx, *qs, -joint.w, qs->wo, *qs_m, 1 / length_squared(qs_m->p - qs->p));
+    if (qs_m) ml[s - 2].rev = vertex_pdf(ctx, *qs, -joint.w, qs->wo, *qs_m, inv_distance_squared(*qs, *qs_m));
 }
 
 class VcmRender {
