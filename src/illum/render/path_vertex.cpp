@@ -354,8 +354,10 @@ SampledSpectrum connection_transmittance(const PathContext& ctx, const PathVerte
         }
     }
     ray.time = ctx.time;
-    // A scene without media and without passable surfaces: the segment is blocked or clear.
-    if (ctx.scene.media.empty() && !ctx.scene.accelerator.any_passable()) {
+    // Leaving in vacuum with nothing passable on the way: blocked or clear, without the tracking state.
+    // Exact before entered_medium(), which keeps a vacuum ray in vacuum; a subsurface material's interior
+    // is a medium even in a scene without named media, so the scene's media do not decide it.
+    if (is_plain_occlusion(ctx.scene, ray)) {
         ++ctx.tc.rays;
         return SampledSpectrum(ctx.scene.occluded(ray) ? 0.0f : 1.0f);
     }

@@ -91,9 +91,8 @@ SampledSpectrum shadow_transmittance(const Scene& scene, Ray ray, const ShadowTa
                                      PCG32& rng, const SampledWavelengths& lambda, SampledSpectrum* r_u,
                                      SampledSpectrum* r_l, std::uint64_t* rays, HomogeneousCache* cache) {
     ++*rays;
-    // In vacuum, with nothing passable (every scene without media), the ray is blocked or not: one plain
-    // occlusion test, no context filter.
-    if (!ray.medium && !scene.accelerator.any_passable())
+    // No context filter either.
+    if (is_plain_occlusion(scene, ray))
         return scene.accelerator.occluded(ray) ? SampledSpectrum(0.0f) : SampledSpectrum(1.0f);
     // One traversal gathers the surfaces the ray passes; the stretches between them are in the media the
     // surfaces separate.

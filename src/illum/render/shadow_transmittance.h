@@ -28,6 +28,12 @@ struct ShadowTarget {
     Vector3f wi; // at_infinity: the direction
 };
 
+// A ray in vacuum in a scene with nothing passable (every scene without media): it is blocked or clear,
+// one plain occlusion test answers it.
+inline bool is_plain_occlusion(const Scene& scene, const Ray& ray) {
+    return !ray.medium && !scene.accelerator.any_passable();
+}
+
 // `ray` starts at the shading point, in its medium, aimed at the target (ray.tmax just short of it, or
 // infinite). Counts the rays it traces in *rays.
 SampledSpectrum shadow_transmittance(const Scene& scene, Ray ray, const ShadowTarget& target, int channel,
