@@ -70,25 +70,13 @@ float mis_weight(const PathContext& ctx, const PathVertex* lv, const PathVertex*
     const PathVertex* qs_m = s > 1 ? &lv[s - 2] : nullptr;
     const PathVertex* pt_m = t > 1 ? &cv[t - 2] : nullptr;
 
-    // The reverse densities next to the connection, from the vertices as they are (the connection's ends
-    // are not delta). Each needs the connection's direction; a vertex of a walk already holds the one
-    // towards its predecessor (wo).
-    float pt_rev = 0, pt_m_rev = 0, qs_rev = 0, qs_m_rev = 0;
-    if (s == 0) {
-        pt_rev = pdf_light_origin(ctx, *pt, *pt_m);
-        pt_m_rev = pdf_light(ctx, *pt, *pt_m);
-    } else {
-        const Segment joint = segment(*pt, *qs); // from pt towards qs
-        if (!(joint.inv_d2 > 0)) return 0;
-        pt_rev = vertex_pdf(ctx, *qs, qs_m ? qs->wo : Vector3f{}, -joint.w, *pt, joint.inv_d2);
-        qs_rev = vertex_pdf(ctx, *pt, pt_m ? pt->wo : Vector3f{}, joint.w, *qs, joint.inv_d2);
-        if (pt_m) pt_m_rev = vertex_pdf(ctx, *pt, joint.w, pt->wo, *pt_m, inv_distance_squared(*pt, *pt_m));
-        if (qs_m) qs_m_rev = vertex_pdf(ctx, *qs, -joint.w, qs->wo, *qs_m, inv_distance_squared(*qs, *qs_m));
-    }
+    // The reverse densities next to the connection, used in place of the stored ones.
+    const JoinDensities j = join_densities(ctx, qs, qs_m, *pt, pt_m);
+    if (!j.joined) return 0;
 
     float sum = 0, ri = 1;
     for (int i = t - 1; i > 0; --i) {
-        const float rev = i == t - 1 ? pt_rev : (i == t - 2 ? pt_m_rev : cv[i].pdf_rev);
+        const float rev = i == t - 1 ? j.pt_rev : (i == t - 2 ? j.pt_m_rev : cv[i].pdf_rev);
         ri *= remap0(rev) / remap0(cv[i].pdf_fwd);
         const bool delta = i == t - 1 ? false : cv[i].delta;
         if (!delta && !cv[i - 1].delta) sum += ri;
@@ -96,7 +84,7 @@ float mis_weight(const PathContext& ctx, const PathVertex* lv, const PathVertex*
     ri = 1;
     for (int i = s - 1; i >= 0; --i) {
         const PathVertex& v = i == 0 ? *l0 : lv[i];
-        const float rev = i == s - 1 ? qs_rev : (i == s - 2 ? qs_m_rev : v.pdf_rev);
+        const float rev = i == s - 1 ? j.qs_rev : (i == s - 2 ? j.qs_m_rev : v.pdf_rev);
         ri *= remap0(rev) / remap0(v.pdf_fwd);
         const bool delta = i == s - 1 ? false : v.delta;
         const bool delta_before = i > 0 ? (i == 1 ? l0->delta : lv[i - 1].delta) : l0->is_delta_light();

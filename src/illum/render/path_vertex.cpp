@@ -151,6 +151,26 @@ float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* 
     return vertex_pdf(ctx, v, wp, to_next.w, next, to_next.inv_d2);
 }
 
+JoinDensities join_densities(const PathContext& ctx, const PathVertex* qs, const PathVertex* qs_m,
+                             const PathVertex& pt, const PathVertex* pt_m) {
+    JoinDensities j;
+    if (!qs) {
+        j.pt_rev = pdf_light_origin(ctx, pt, *pt_m);
+        j.pt_m_rev = pdf_light(ctx, pt, *pt_m);
+        return j;
+    }
+    const Segment joint = segment(pt, *qs); // from pt towards qs
+    if (!(joint.inv_d2 > 0)) {
+        j.joined = false;
+        return j;
+    }
+    j.pt_rev = vertex_pdf(ctx, *qs, qs_m ? qs->wo : Vector3f{}, -joint.w, pt, joint.inv_d2);
+    j.qs_rev = vertex_pdf(ctx, pt, pt_m ? pt.wo : Vector3f{}, joint.w, *qs, joint.inv_d2);
+    if (pt_m) j.pt_m_rev = vertex_pdf(ctx, pt, joint.w, pt.wo, *pt_m, inv_distance_squared(pt, *pt_m));
+    if (qs_m) j.qs_m_rev = vertex_pdf(ctx, *qs, -joint.w, qs->wo, *qs_m, inv_distance_squared(*qs, *qs_m));
+    return j;
+}
+
 SampledSpectrum vertex_f(const PathVertex& v, Vector3f wi, TransportMode mode) {
     switch (v.type) {
     case VertexType::Surface: {

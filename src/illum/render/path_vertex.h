@@ -109,6 +109,18 @@ float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* 
 // segment once for its two ends (v.wo is already the direction towards v's predecessor in its subpath).
 float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vector3f wn,
                  const PathVertex& next, float inv_d2);
+// The reverse densities next to a join of the light subpath ending in qs (after qs_m) with the camera
+// subpath ending in pt (after pt_m), as they are in the joined path (Veach eq. 10.9; the join's ends are
+// not delta): pt's from qs, pt_m's through pt from qs, qs's from pt, qs_m's through qs from pt. qs null:
+// s = 0, pt is on an emitter (pt_m must exist). Null neighbours leave their entries 0. `joined` is false
+// (and all four 0) when qs and pt coincide. The connection's segment is computed once; each end's direction
+// towards its predecessor is its wo.
+struct JoinDensities {
+    float pt_rev = 0, pt_m_rev = 0, qs_rev = 0, qs_m_rev = 0;
+    bool joined = true;
+};
+JoinDensities join_densities(const PathContext& ctx, const PathVertex* qs, const PathVertex* qs_m,
+                             const PathVertex& pt, const PathVertex* pt_m);
 // The density (area, at next) with which the light at v emits towards next.
 float pdf_light(const PathContext& ctx, const PathVertex& v, const PathVertex& next);
 // The density with which a light subpath starts at v (light selection times position; for a vertex at

@@ -94,28 +94,15 @@ void set_join_densities(const PathContext& ctx, const PathVertex* lv, int s, con
     const PathVertex* pt = t > 0 ? &cv[t - 1] : nullptr;
     const PathVertex* qs_m = s > 1 ? &lv[s - 2] : nullptr;
     const PathVertex* pt_m = t > 1 ? &cv[t - 2] : nullptr;
-    if (s == 0) {
-        mc[t - 1].rev = pdf_light_origin(ctx, *pt, *pt_m);
-        mc[t - 1].delta = false;
-        if (pt_m) mc[t - 2].rev = pdf_light(ctx, *pt, *pt_m);
-        return;
-    }
-    // The connection's segment once for its two ends (a walk's vertex holds the direction towards its
-    // predecessor in wo), as bdpt_integrator.cpp's mis_weight.
-    const Segment joint = segment(*pt, *qs);
-    if (!(joint.inv_d2 > 0)) {
-        // Coincident ends: no density joins them (their contribution is zero too).
-        mc[t - 1].rev = ml[s - 1].rev = 0;
-        if (pt_m) mc[t - 2].rev = 0;
-        if (qs_m) ml[s - 2].rev = 0;
-        return;
-    }
-    mc[t - 1].rev = vertex_pdf(ctx, *qs, qs_m ? qs->wo : Vector3f{}, -joint.w, *pt, joint.inv_d2);
+    const JoinDensities j = join_densities(ctx, qs, qs_m, *pt, pt_m);
+    mc[t - 1].rev = j.pt_rev;
     mc[t - 1].delta = false;
-    if (pt_m) mc[t - 2].rev = vertex_pdf(ctx, *pt, joint.w, pt->wo, *pt_m, inv_distance_squared(*pt, *pt_m));
-    ml[s - 1].rev = vertex_pdf(ctx, *pt, pt_m ? pt->wo : Vector3f{}, joint.w, *qs, joint.inv_d2);
-    ml[s - 1].delta = false;
-    if (qs_m) ml[s - 2].rev = vertex_pdf(ctx, *qs, -joint.w, qs->wo, *qs_m, inv_distance_squared(*qs, *qs_m));
+    if (pt_m) mc[t - 2].rev = j.pt_m_rev;
+    if (qs) {
+        ml[s - 1].rev = j.qs_rev;
+        ml[s - 1].delta = false;
+    }
+    if (qs_m) ml[s - 2].rev = j.qs_m_rev;
 }
 
 class VcmRender {
