@@ -153,6 +153,39 @@ Material "diffuse" "rgb reflectance" [0 0 0]
                                            occluder));
 }
 
+// A box (x -1..0.5, y -0.5..1, z 0..1.2) on a grey floor under a small area light, 32 x 32 pixels, volpath
+// maxdepth 6 (bdpt_test.cpp and vcm_test.cpp): `box` opens the box's AttributeBegin and gives what is
+// inside it (a medium behind an interface, a subsurface material).
+inline std::string box_on_floor_scene(const std::string& box) {
+    return R"(
+LookAt 0 -4 2.5  0 0 0.5  0 0 1
+Camera "perspective" "float fov" [40]
+Film "rgb" "integer xresolution" [32] "integer yresolution" [32]
+Sampler "independent"
+Integrator "volpath" "integer maxdepth" [6]
+WorldBegin
+AttributeBegin
+  AreaLightSource "diffuse" "rgb L" [20 20 20]
+  Translate 0.3 0.2 2.5
+  ReverseOrientation
+  Shape "disk" "float radius" [0.3]
+AttributeEnd
+Material "diffuse" "rgb reflectance" [0.6 0.6 0.6]
+Shape "trianglemesh" "point3 P" [-5 -5 0 5 -5 0 5 5 0 -5 5 0] "integer indices" [0 1 2 0 2 3]
+)" + box + R"(  Shape "trianglemesh" "point3 P" [-1 -0.5 0  0.5 -0.5 0  0.5 1 0  -1 1 0  -1 -0.5 1.2  0.5 -0.5 1.2  0.5 1 1.2  -1 1 1.2]
+    "integer indices" [0 1 5 0 5 4 1 2 6 1 6 5 2 3 7 2 7 6 3 0 4 3 4 7 4 5 6 4 6 7 0 2 1 0 3 2]
+AttributeEnd
+)";
+}
+
+// A box of homogeneous chromatic scattering medium (behind a material-less interface) for box_on_floor_scene.
+inline const char* kMediumBox =
+    R"(MakeNamedMedium "smoke" "string type" "homogeneous" "rgb sigma_a" [0.2 0.3 0.4] "rgb sigma_s" [1 2 3] "float g" [0.3]
+AttributeBegin
+  MediumInterface "smoke" ""
+  Material "interface"
+)";
+
 // Mean of one channel over the pixels and its standard error, treating pixels as independent
 // estimates (they are: each has its own scrambled sample sequence): analysis's pixel_estimate.
 struct MeanEstimate {

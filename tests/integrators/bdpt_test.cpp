@@ -157,90 +157,40 @@ AttributeBegin
 AttributeEnd
 )";
 
-TEST(BDPT, AgreesWithPathOnSurfaces) {
+// bdpt at `spp` against `reference` at ref_spp (independent sampler, seed 3), pixel by pixel (expect_agree).
+void expect_agrees_with_reference(const std::string& scene, const char* reference, int ref_spp, int spp,
+                                  const std::string& what) {
     RenderSetup p;
-    p.integrator = "path";
-    p.spp = 256;
+    p.integrator = reference;
+    p.spp = ref_spp;
     p.sampler = "independent";
     p.seed = 3;
-    Image ref = render_pbrt(kSurfaceScene, p).image;
-    RenderResult r = render_pbrt(kSurfaceScene, bdpt(64));
+    Image ref = render_pbrt(scene, p).image;
+    RenderResult r = render_pbrt(scene, bdpt(spp));
     EXPECT_EQ(r.nonfinite_samples, 0u);
-    expect_agree(r.image, ref, "surfaces: bdpt - path");
+    expect_agree(r.image, ref, what);
+}
+
+TEST(BDPT, AgreesWithPathOnSurfaces) {
+    expect_agrees_with_reference(kSurfaceScene, "path", 256, 64, "surfaces: bdpt - path");
 }
 
 // A box of homogeneous scattering medium (chromatic) on the floor, lit by a small area light.
-const char* kMediumScene = R"(
-LookAt 0 -4 2.5  0 0 0.5  0 0 1
-Camera "perspective" "float fov" [40]
-Film "rgb" "integer xresolution" [32] "integer yresolution" [32]
-Sampler "independent"
-Integrator "volpath" "integer maxdepth" [6]
-WorldBegin
-AttributeBegin
-  AreaLightSource "diffuse" "rgb L" [20 20 20]
-  Translate 0.3 0.2 2.5
-  ReverseOrientation
-  Shape "disk" "float radius" [0.3]
-AttributeEnd
-Material "diffuse" "rgb reflectance" [0.6 0.6 0.6]
-Shape "trianglemesh" "point3 P" [-5 -5 0 5 -5 0 5 5 0 -5 5 0] "integer indices" [0 1 2 0 2 3]
-MakeNamedMedium "smoke" "string type" "homogeneous" "rgb sigma_a" [0.2 0.3 0.4] "rgb sigma_s" [1 2 3] "float g" [0.3]
-AttributeBegin
-  MediumInterface "smoke" ""
-  Material "interface"
-  Shape "trianglemesh" "point3 P" [-1 -0.5 0  0.5 -0.5 0  0.5 1 0  -1 1 0  -1 -0.5 1.2  0.5 -0.5 1.2  0.5 1 1.2  -1 1 1.2]
-    "integer indices" [0 1 5 0 5 4 1 2 6 1 6 5 2 3 7 2 7 6 3 0 4 3 4 7 4 5 6 4 6 7 0 2 1 0 3 2]
-AttributeEnd
-)";
+const std::string kMediumScene = test::box_on_floor_scene(test::kMediumBox);
 
 TEST(BDPT, AgreesWithVolPathInMedium) {
-    RenderSetup p;
-    p.integrator = "volpath";
-    p.spp = 128;
-    p.sampler = "independent";
-    p.seed = 3;
-    Image ref = render_pbrt(kMediumScene, p).image;
-    RenderResult r = render_pbrt(kMediumScene, bdpt(32));
-    EXPECT_EQ(r.nonfinite_samples, 0u);
-    expect_agree(r.image, ref, "medium: bdpt - volpath");
+    expect_agrees_with_reference(kMediumScene, "volpath", 128, 32, "medium: bdpt - volpath");
 }
 
 // The same box as a denser subsurface material's interior, in a scene without named media: connections
 // between vertices inside it (or from its boundary into it) cross the interior medium, not vacuum (a
 // shortcut that took the scene's named media for all of them made bdpt 15% too bright here: 5 sigma).
-const char* kSubsurfaceScene = R"(
-LookAt 0 -4 2.5  0 0 0.5  0 0 1
-Camera "perspective" "float fov" [40]
-Film "rgb" "integer xresolution" [32] "integer yresolution" [32]
-Sampler "independent"
-Integrator "volpath" "integer maxdepth" [6]
-WorldBegin
-AttributeBegin
-  AreaLightSource "diffuse" "rgb L" [20 20 20]
-  Translate 0.3 0.2 2.5
-  ReverseOrientation
-  Shape "disk" "float radius" [0.3]
-AttributeEnd
-Material "diffuse" "rgb reflectance" [0.6 0.6 0.6]
-Shape "trianglemesh" "point3 P" [-5 -5 0 5 -5 0 5 5 0 -5 5 0] "integer indices" [0 1 2 0 2 3]
-AttributeBegin
+const std::string kSubsurfaceScene = test::box_on_floor_scene(R"(AttributeBegin
   Material "subsurface" "rgb sigma_a" [0.1 0.2 0.3] "rgb sigma_s" [3 4 5] "float g" [0.3] "float eta" [1.33]
-  Shape "trianglemesh" "point3 P" [-1 -0.5 0  0.5 -0.5 0  0.5 1 0  -1 1 0  -1 -0.5 1.2  0.5 -0.5 1.2  0.5 1 1.2  -1 1 1.2]
-    "integer indices" [0 1 5 0 5 4 1 2 6 1 6 5 2 3 7 2 7 6 3 0 4 3 4 7 4 5 6 4 6 7 0 2 1 0 3 2]
-AttributeEnd
-)";
+)");
 
 TEST(BDPT, AgreesWithVolPathInSubsurfaceInterior) {
-    RenderSetup p;
-    p.integrator = "volpath";
-    p.spp = 512;
-    p.sampler = "independent";
-    p.seed = 3;
-    Image ref = render_pbrt(kSubsurfaceScene, p).image;
-    RenderResult r = render_pbrt(kSubsurfaceScene, bdpt(128));
-    EXPECT_EQ(r.nonfinite_samples, 0u);
-    expect_agree(r.image, ref, "subsurface: bdpt - volpath");
+    expect_agrees_with_reference(kSubsurfaceScene, "volpath", 512, 128, "subsurface: bdpt - volpath");
 }
 
 // Same image at any thread count (t = 1 splats are added in chunk order).

@@ -280,29 +280,7 @@ TEST(VCM, ModesAgreeWithEachOtherAndThePathTracer) {
 // A box of chromatic scattering medium on a floor under a small area light (bdpt_test.cpp's scene): the
 // connections carry the transport through the medium; merges happen on the floor only, and the weights
 // count the medium vertices as vertices where no merge can happen. Agrees with volpath per pixel on average.
-const char* kMediumScene = R"(
-LookAt 0 -4 2.5  0 0 0.5  0 0 1
-Camera "perspective" "float fov" [40]
-Film "rgb" "integer xresolution" [32] "integer yresolution" [32]
-Sampler "independent"
-Integrator "volpath" "integer maxdepth" [6]
-WorldBegin
-AttributeBegin
-  AreaLightSource "diffuse" "rgb L" [20 20 20]
-  Translate 0.3 0.2 2.5
-  ReverseOrientation
-  Shape "disk" "float radius" [0.3]
-AttributeEnd
-Material "diffuse" "rgb reflectance" [0.6 0.6 0.6]
-Shape "trianglemesh" "point3 P" [-5 -5 0 5 -5 0 5 5 0 -5 5 0] "integer indices" [0 1 2 0 2 3]
-MakeNamedMedium "smoke" "string type" "homogeneous" "rgb sigma_a" [0.2 0.3 0.4] "rgb sigma_s" [1 2 3] "float g" [0.3]
-AttributeBegin
-  MediumInterface "smoke" ""
-  Material "interface"
-  Shape "trianglemesh" "point3 P" [-1 -0.5 0  0.5 -0.5 0  0.5 1 0  -1 1 0  -1 -0.5 1.2  0.5 -0.5 1.2  0.5 1 1.2  -1 1 1.2]
-    "integer indices" [0 1 5 0 5 4 1 2 6 1 6 5 2 3 7 2 7 6 3 0 4 3 4 7 4 5 6 4 6 7 0 2 1 0 3 2]
-AttributeEnd
-)";
+const std::string kMediumScene = test::box_on_floor_scene(test::kMediumBox);
 
 TEST(VCM, AgreesWithVolPathInMedium) {
     RenderSetup p;
