@@ -403,12 +403,6 @@ SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const Pat
     return connection_transmittance(ctx, a, b, ch) * g;
 }
 
-SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, int ch) {
-    Segment ab = segment(a, b);
-    if (!(ab.inv_d2 > 0)) return SampledSpectrum(0.0f);
-    return connect_g(ctx, a, b, ab, ch);
-}
-
 bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u_light, Point2f u,
                            int channel, PathVertex* sampled, SampledSpectrum* l) {
     float pmf = 0;

@@ -160,9 +160,7 @@ int trace_light_subpath(const PathContext& ctx, float u_light, Point2f u_pos, Po
 bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u_light, Point2f u,
                            int channel, PathVertex* sampled, SampledSpectrum* l);
 // The geometry term with transmittance: |cos_a| |cos_b| T / d² (cosines with the shading normals, only at
-// surface vertices).
-SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, int channel);
-// The same with the segment from a to b at hand.
+// surface vertices), with ab = segment(a, b) (non-degenerate) at hand.
 SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, const Segment& ab,
                           int channel);
 
