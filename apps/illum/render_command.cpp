@@ -35,7 +35,8 @@ struct RenderArgs {
     std::string integrator;            // "": the scene's
     int max_depth = -2;                // -2: the scene's
     std::string sampler;
-    std::string resolution; // WxH
+    std::string light_sampler; // "": the scene's
+    std::string resolution;    // WxH
     std::string stats;
     std::string tonemap = "clamp";
     float exposure = 0;
@@ -162,6 +163,7 @@ Prepared prepare(const RenderArgs& args, bool lead, bool quiet) {
         p.outputs.push_back(name);
     }
 
+    if (!args.light_sampler.empty()) p.scene->set_light_sampler(*parse_light_sampler(args.light_sampler));
     p.integrator_name = args.integrator.empty() ? p.scene->request.integrator : args.integrator;
     int max_depth = args.max_depth == -2 ? p.scene->request.max_depth : args.max_depth;
     p.integrator = make_integrator(p.integrator_name, *p.scene, max_depth);
@@ -289,7 +291,13 @@ void add_render_command(CLI::App& app) {
     cmd->add_option("--max-depth", args->max_depth,
                     "Maximum number of scattering events (default: the scene's)")
         ->check(CLI::Range(-1, 100000));
-    cmd->add_option("--sampler", args->sampler, "zsobol, sobol, paddedsobol, halton, pmj02bn, stratified or independent (default: the scene's)");
+    cmd->add_option(
+        "--sampler", args->sampler,
+        "zsobol, sobol, paddedsobol, halton, pmj02bn, stratified or independent (default: the scene's)");
+    cmd->add_option("--light-sampler", args->light_sampler,
+                    "Next-event estimation's light choice: bvh (pbrt-v4's default: by distance and "
+                    "orientation), power, uniform or exhaustive (default: the scene's \"lightsampler\")")
+        ->check(CLI::IsMember({"bvh", "power", "uniform", "exhaustive"}));
     cmd->add_option("--resolution", args->resolution, "Film resolution WIDTHxHEIGHT (default: the scene's)");
     cmd->add_option("--stats", args->stats, "Write render statistics as JSON to this file");
     cmd->add_option("--tonemap", args->tonemap, "Tone map for PNG output: clamp, reinhard or aces");

@@ -99,6 +99,11 @@ public:
     std::optional<ShapeSample> sample(const ShapeSampleContext& ctx, Point2f u) const override;
     SolidAnglePdf pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,
                       Normal3f n_hit) const override;
+    // A rectangle is planar: its one normal. Any other patch: the whole sphere.
+    DirectionCone normal_bounds() const override {
+        if (!is_rectangle()) return DirectionCone::entire_sphere();
+        return DirectionCone(Vector3f(mesh_->geometric_normal(index_, 0.5f, 0.5f)));
+    }
     // The density per unit area with which sample_area() returns the patch's point p.
     AreaPdf area_pdf(Point3f p) const override;
 

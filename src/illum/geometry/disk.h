@@ -13,6 +13,11 @@ public:
     DiskShape(const Transform& world_from_object, float height, float radius, float inner_radius,
               bool flip_normal, float phimax = 2 * kPi);
 
+    // Planar: every normal is the one a sampled point has.
+    DirectionCone normal_bounds() const override {
+        return DirectionCone(Vector3f(sample_area(Point2f{0.5f, 0.5f}).n));
+    }
+
 protected:
     int roots(Vec3d o, Vec3d d, double t[2]) const override;
     bool inside_clip(Vec3d p) const override;

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "illum/math/bounds.h"
+#include "illum/math/direction_cone.h"
 #include "illum/math/vector.h"
 #include "illum/radiometry/quantity.h"
 
@@ -50,6 +51,9 @@ public:
     // The density per unit area with which sample_area() returns the shape's point p (1 / area for the
     // shapes that sample uniformly).
     virtual AreaPdf area_pdf(Point3f) const { return AreaPdf(1 / area()); }
+    // A cone holding every normal of the surface (oriented as its hits' normals are); the whole sphere
+    // unless a shape knows better.
+    virtual DirectionCone normal_bounds() const { return DirectionCone::entire_sphere(); }
 
 protected:
     // Converts an area sample to a solid-angle one as seen from ctx (pdf_ω = pdf_A r² / |cos θ_l|).

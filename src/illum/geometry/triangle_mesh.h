@@ -53,6 +53,9 @@ public:
 
     float area() const override { return area_; }
     Bounds3f bounds() const override;
+    DirectionCone normal_bounds() const override {
+        return DirectionCone(Vector3f(mesh_->geometric_normal(index_)));
+    }
     AreaShapeSample sample_area(Point2f u) const override;
     std::optional<ShapeSample> sample(const ShapeSampleContext& ctx, Point2f u) const override;
     SolidAnglePdf pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,

@@ -96,6 +96,19 @@ Power3 DiffuseAreaLight::power() const {
            (two_sided_ ? 2.0f : 1.0f);
 }
 
+std::optional<LightBounds> DiffuseAreaLight::bounds() const {
+    DirectionCone normals = shape_->normal_bounds();
+    LightBounds b;
+    b.bounds = shape_->bounds();
+    b.w = normals.w;
+    b.cos_theta_o = normals.cos_theta;
+    b.cos_theta_e = 0;
+    b.two_sided = two_sided_;
+    float one_side = power().rgb().luminance() / (two_sided_ ? 2.0f : 1.0f); // π L A
+    b.phi = 2 * one_side;
+    return b;
+}
+
 std::optional<LightLeSample> DiffuseAreaLight::sample_le(Point2f u1, Point2f u2,
                                                          const SampledWavelengths& lambda) const {
     AreaShapeSample ss = shape_->sample_area(u1);

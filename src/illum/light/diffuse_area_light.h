@@ -40,6 +40,9 @@ public:
     }
     // Φ = π A L for a one-sided Lambertian emitter, twice that for a two-sided one.
     Power3 power() const override;
+    // The shape's box and cone of normals, emitting over the hemisphere (θe = π/2); phi = 2π L A, twice
+    // the power of one side (light_bounds.h).
+    std::optional<LightBounds> bounds() const override;
     AreaPdf pdf_le_position(const SurfaceHit& hit) const override { return shape_->area_pdf(hit.p); }
     // A point uniform by area, a cosine-weighted direction about its normal (either side with
     // probability 1/2 when two-sided): flux = L cos θ / (p_A · cos θ / π) = π L / p_A (× 2 two-sided).

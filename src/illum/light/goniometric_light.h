@@ -41,6 +41,10 @@ public:
     std::optional<Point3f> position() const override { return position_; }
     // Φ = 4π I mean(Y).
     Power3 power() const override;
+    // Bounded as an isotropic point light of the same power (phi = 4π times the mean intensity).
+    std::optional<LightBounds> bounds() const override {
+        return point_bounds(position_, power().rgb().luminance());
+    }
     // A direction with density p(uv) / 4π from the texels' Y: flux = I(ω) / p(ω).
     std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
                                            const SampledWavelengths& lambda) const override;

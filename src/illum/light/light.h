@@ -11,6 +11,7 @@
 
 #include "illum/geometry/ray.h"
 #include "illum/geometry/surface_hit.h"
+#include "illum/light/light_bounds.h"
 #include "illum/math/bounds.h"
 #include "illum/radiometry/quantity.h"
 #include "illum/radiometry/sampled_wavelengths.h"
@@ -88,6 +89,10 @@ public:
     virtual Radiance3 le(const Ray&, const SampledWavelengths&) const { return {}; }
     // In RGB (light selection by power does not depend on the mode).
     virtual Power3 power() const = 0;
+    // Where the light is, which way and how strongly it emits, for light samplers that choose by the
+    // receiver (light_bounds.h); nullopt for lights at infinity and those a sampler should treat like them
+    // (picked apart from the bounded ones, uniformly).
+    virtual std::optional<LightBounds> bounds() const { return std::nullopt; }
     // The area density with which sample_le() starts a photon at the point of `hit` on an area light (for
     // weighing a light seen directly against the camera's sampling); zero for the other lights.
     virtual AreaPdf pdf_le_position(const SurfaceHit&) const { return AreaPdf(0); }

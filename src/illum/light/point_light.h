@@ -32,6 +32,10 @@ public:
     // Φ = ∫ I dω = 4π I.
     std::optional<Point3f> position() const override { return position_; }
     Power3 power() const override { return Intensity3(intensity_.rgb_value()) * SolidAngle(4 * kPi); }
+    // A point emitting every way: θo = π, θe = π/2, phi = 4π I.
+    std::optional<LightBounds> bounds() const override {
+        return point_bounds(position_, power().rgb().luminance());
+    }
     // Uniform over the sphere of directions: flux = I / (1/4π) = 4π I for every photon.
     std::optional<LightLeSample> sample_le(Point2f, Point2f u2,
                                            const SampledWavelengths& lambda) const override {

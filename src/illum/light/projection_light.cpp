@@ -112,3 +112,24 @@ void ProjectionLight::pdf_le(const Ray& ray, Normal3f, AreaPdf* pos, SolidAngleP
 }
 
 } // namespace illum
+
+namespace illum {
+
+std::optional<LightBounds> ProjectionLight::bounds() const {
+    const double omega = plane_rectangle_solid_angle(-frustum_.sx, frustum_.sx, -frustum_.sy, frustum_.sy);
+    LightBounds b = point_bounds(position_, float(4 * double(kPi) * double(power_.luminance()) / omega));
+    b.w = normalize(world_from_light_(Vector3f{0, 0, 1}));
+    b.cos_theta_o = 1;
+    // The frustum's corners are the directions farthest from the axis (each carried to the world: the
+    // light's transform may shear).
+    float cos_e = 1;
+    for (float sa : {-1.0f, 1.0f})
+        for (float sb : {-1.0f, 1.0f})
+            cos_e = std::min(
+                cos_e,
+                dot(b.w, normalize(world_from_light_(Vector3f{sa * frustum_.sx, sb * frustum_.sy, 1}))));
+    b.cos_theta_e = std::min(cos_e, 0.999f);
+    return b;
+}
+
+} // namespace illum

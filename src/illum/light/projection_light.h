@@ -57,6 +57,9 @@ public:
     }
     std::optional<Point3f> position() const override { return position_; }
     Power3 power() const override { return Power3(SampledSpectrum(power_)); }
+    // Emitting along the light's z axis (θo = 0) out to the frustum's corner (θe); phi = 4π times the mean
+    // intensity over the frustum's solid angle Ω, Φ / Ω.
+    std::optional<LightBounds> bounds() const override;
     std::optional<LightLeSample> sample_le(Point2f u1, Point2f u2,
                                            const SampledWavelengths& lambda) const override;
     void pdf_le(const Ray& ray, Normal3f n, AreaPdf* pos, SolidAnglePdf* dir) const override;

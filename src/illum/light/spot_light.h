@@ -105,6 +105,16 @@ public:
         return Intensity3(intensity_.rgb_value()) *
                SolidAngle(2 * kPi * ((1 - cos_start_) + (cos_start_ - cos_end_) / 2));
     }
+    // Emitting about the axis: θo = θ_start (full intensity), θe = θ_end - θ_start (the falloff), phi = 4π I
+    // with I the peak intensity. (A hard-edged cone has θe = 0, whose cosine 1 no direction can exceed:
+    // it is kept just below, as pbrt-v4 does, PBR 4th ed. §12.6.3.)
+    std::optional<LightBounds> bounds() const override {
+        LightBounds b = point_bounds(position_, 4 * kPi * intensity_.rgb.luminance());
+        b.w = frame_.n;
+        b.cos_theta_o = cos_start_;
+        b.cos_theta_e = std::min(std::cos(safe_acos(cos_end_) - safe_acos(cos_start_)), 0.999f);
+        return b;
+    }
     // Uniform within the cone θ <= θ_end: flux = I(θ) / p_dir.
     std::optional<LightLeSample> sample_le(Point2f, Point2f u2,
                                            const SampledWavelengths& lambda) const override {

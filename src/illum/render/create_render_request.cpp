@@ -67,8 +67,11 @@ RenderRequest create_render_request(const EntityDesc& in, const EntityDesc& s, D
                          "\"regularize\" is not supported; rendered without");
     if (const Param* ls = in.params.find("lightsampler")) {
         std::string name = in.params.get_string("lightsampler", "bvh");
-        if (name != "power")
-            diag.unsupported(ls->loc, fmt::format("light sampler \"{}\" is replaced by \"power\"", name));
+        std::optional<LightSamplerKind> kind = parse_light_sampler(name);
+        if (!kind)
+            throw Error(ls->loc, fmt::format("unknown light sampler \"{}\" (uniform, power, bvh or exhaustive)",
+                                             name));
+        r.light_sampler = *kind;
     }
 
     std::optional<SamplerKind> kind = parse_sampler_kind(s.type);

@@ -11,7 +11,7 @@ namespace illum {
 // Integrator: pbrt-v4's "path", "volpath" (surfaces only until media land), "simplepath", illum's
 // "direct" (pbrt-v3's "directlighting"), "albedo", "normal", "lightpath", "sppm" ("photonsperiteration"
 // (-1: the pixel count), "radius" (1), "seed" (6502)); "maxdepth" (5), "regularize" (false; true is
-// warned), "lightsampler" ("bvh" in pbrt-v4; illum samples lights by power, warned when another is named).
+// warned), "lightsampler" (uniform, power, bvh (the default) or exhaustive, as pbrt-v4's).
 // The other pbrt-v4 integrators render with "path", warned. Sampler: every pbrt-v4 sampler but "sobol"
 // as pbrt-v4 defines it (sampler.h), "sobol" is illum's padded Owen-scrambled Sobol; "pixelsamples" (16),
 // "seed" (the CLI's --seed wins when given), "randomization" (zsobol, paddedsobol: "fastowen"; halton:

@@ -36,8 +36,8 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
                     l += le * beta;
                 } else {
                     // Next-event estimation's density for this direction: pick the light, then sample it.
-                    SolidAnglePdf p_light =
-                        scene_.light_sampler.pmf(env) * env->pdf_li(prev_ctx, ray.d, nullptr);
+                    SolidAnglePdf p_light = scene_.direct_light_sampler.pmf(prev_ctx, env) *
+                                            env->pdf_li(prev_ctx, ray.d, nullptr);
                     l += le * beta * power_heuristic(bsdf_pdf_for_mis(), p_light);
                 }
             }
@@ -50,7 +50,7 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
                 if (depth == 0 || specular_bounce) {
                     l += le * beta;
                 } else {
-                    SolidAnglePdf p_light = scene_.light_sampler.pmf(hit.area_light) *
+                    SolidAnglePdf p_light = scene_.direct_light_sampler.pmf(prev_ctx, hit.area_light) *
                                             hit.area_light->pdf_li(prev_ctx, ray.d, &hit);
                     l += le * beta * power_heuristic(bsdf_pdf_for_mis(), p_light);
                 }
@@ -78,12 +78,13 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         Vector3f wo = hit.wo;
         LightSampleContext ctx(hit);
 
-        // Next-event estimation: one light picked by power.
+        // Next-event estimation: one light picked by the light sampler for this point.
         float u_light = sampler.get_1d();
         Point2f u_li = sampler.get_2d();
         if (bsdf.is_non_specular()) {
             float pmf = 0;
-            if (const Light* light = scene_.light_sampler.sample(u_light, &pmf); light && pmf > 0) {
+            if (const Light* light = scene_.direct_light_sampler.sample(ctx, u_light, &pmf);
+                light && pmf > 0) {
                 if (auto ls = light->sample_li(ctx, u_li, tc.lambda)) {
                     Bsdf3 f = bsdf.f(wo, ls->wi);
                     float cos_i = abs_dot(ls->wi, hit.ns);

@@ -17,6 +17,14 @@ void Scene::finalize() {
         if (lights[i]->type() == LightType::Infinite) infinite_lights.push_back(lights[i].get());
     }
     light_sampler = PowerLightSampler(all);
+    set_light_sampler(request.light_sampler);
+}
+
+void Scene::set_light_sampler(LightSamplerKind kind) {
+    request.light_sampler = kind;
+    std::vector<const Light*> all;
+    for (const auto& l : lights) all.push_back(l.get());
+    direct_light_sampler = DirectLightSampler(all, kind);
 }
 
 } // namespace illum

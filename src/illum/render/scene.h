@@ -17,6 +17,7 @@
 #include "illum/camera/sensor.h"
 #include "illum/geometry/accelerator.h"
 #include "illum/light/light.h"
+#include "illum/light/direct_light_sampler.h"
 #include "illum/light/light_sampler.h"
 #include "illum/medium/medium.h"
 #include "illum/render/sampler.h"
@@ -30,6 +31,8 @@ namespace illum {
 struct RenderRequest {
     std::string integrator = "path";
     int max_depth = 5;
+    // The integrator's "lightsampler" (pbrt-v4's default "bvh"; direct_light_sampler.h).
+    LightSamplerKind light_sampler = LightSamplerKind::bvh;
     std::string sampler = "sobol";
     int spp = 16;
     SamplerSettings sampler_settings;     // the Sampler directive's parameters (sampler.h)
@@ -70,7 +73,10 @@ public:
     Accelerator accelerator;
     std::vector<std::unique_ptr<Light>> lights;
     std::vector<const Light*> infinite_lights;
+    // Picks lights without a receiver: photons, light subpaths, and the bidirectional methods' densities.
     PowerLightSampler light_sampler;
+    // Picks the light of next-event estimation for a receiver (the request's "lightsampler").
+    DirectLightSampler direct_light_sampler;
     std::unique_ptr<Camera> camera;
     std::unique_ptr<Filter> filter;
     // The film's sensor and output colour space, which is also the space RGB inputs are given in
@@ -160,6 +166,8 @@ public:
     // Registers the lights with the light sampler and lets them see the scene bounds; call once after
     // all geometry and lights are added.
     void finalize();
+    // Rebuilds the next-event light sampler as `kind` (the request's light_sampler), after finalize().
+    void set_light_sampler(LightSamplerKind kind);
 };
 
 } // namespace illum

@@ -178,17 +178,18 @@ bool SppmRender::unoccluded(const SurfaceHit& hit, const LightLiSample& ls, std:
     return !scene_.occluded(shadow);
 }
 
-// Next-event estimation at a camera vertex: one light picked by power, weighed against BSDF sampling by
-// the power heuristic (PBR 4th ed. §13.4; pbrt-v4's SPPMIntegrator::SampleLd).
+// Next-event estimation at a camera vertex: one light picked by the light sampler for the point, weighed
+// against BSDF sampling by the power heuristic (PBR 4th ed. §13.4; pbrt-v4's SPPMIntegrator::SampleLd).
 SampledSpectrum SppmRender::sample_direct(const SurfaceHit& hit, const BSDF& bsdf,
                                           const SampledWavelengths& lambda, CameraThread& t) const {
     float u_light = t.sampler.get_1d();
     Point2f u_li = t.sampler.get_2d();
     if (!bsdf.is_non_specular()) return {};
     float pmf = 0;
-    const Light* light = scene_.light_sampler.sample(u_light, &pmf);
+    LightSampleContext ctx(hit);
+    const Light* light = scene_.direct_light_sampler.sample(ctx, u_light, &pmf);
     if (!light || !(pmf > 0)) return {};
-    auto ls = light->sample_li(LightSampleContext(hit), u_li, lambda);
+    auto ls = light->sample_li(ctx, u_li, lambda);
     if (!ls) return {};
     Bsdf3 f = bsdf.f(hit.wo, ls->wi);
     float cos_i = abs_dot(ls->wi, hit.ns);
@@ -247,7 +248,7 @@ void SppmRender::trace_camera_path(int x, int y, int iteration, const SampledWav
                 if (le.is_black()) continue;
                 float w = specular_bounce
                               ? 1.0f
-                              : power_heuristic(bsdf_pdf, scene_.light_sampler.pmf(env) *
+                              : power_heuristic(bsdf_pdf, scene_.direct_light_sampler.pmf(prev_ctx, env) *
                                                               env->pdf_li(prev_ctx, ray.d, nullptr));
                 add(beta * le.s * w);
             }
@@ -258,8 +259,9 @@ void SppmRender::trace_camera_path(int x, int y, int iteration, const SampledWav
             if (!le.is_black()) {
                 float w = specular_bounce
                               ? 1.0f
-                              : power_heuristic(bsdf_pdf, scene_.light_sampler.pmf(hit.area_light) *
-                                                              hit.area_light->pdf_li(prev_ctx, ray.d, &hit));
+                              : power_heuristic(bsdf_pdf,
+                                                scene_.direct_light_sampler.pmf(prev_ctx, hit.area_light) *
+                                                    hit.area_light->pdf_li(prev_ctx, ray.d, &hit));
                 add(beta * le.s * w);
             }
         }

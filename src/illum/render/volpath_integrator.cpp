@@ -39,7 +39,7 @@ SampledSpectrum VolPathIntegrator::sample_light(const Vertex& v, PathState& path
     Point2f u_li = sampler.get_2d();
     LightSampleContext ctx = v.hit ? LightSampleContext(*v.hit) : LightSampleContext(v.p, {}, {}, path.time);
     float pmf = 0;
-    const Light* light = scene_.light_sampler.sample(u_light, &pmf);
+    const Light* light = pick_light(ctx, u_light, &pmf);
     if (!light || pmf <= 0) return {};
     std::optional<LightLiSample> ls = light->sample_li(ctx, u_li, tc.lambda);
     if (!ls || ls->biradiance.s.is_black()) return {};
@@ -190,7 +190,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         } else if (depth == 0 || specular_bounce) {
             l += beta * le / r_u.average();
         } else {
-            float p_light = scene_.light_sampler.pmf(light) * light->pdf_li(prev_ctx, ray.d, hit).value;
+            float p_light = pick_light_pmf(prev_ctx, light) * light->pdf_li(prev_ctx, ray.d, hit).value;
             l += beta * le / (r_u + r_l * p_light).average();
         }
     };

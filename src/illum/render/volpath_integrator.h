@@ -41,6 +41,18 @@ public:
     }
     Radiance3 estimate(const Ray& camera_ray, ThreadContext& tc) const override;
 
+    // Next-event estimation's light for ctx and its probability: the scene's light sampler at a surface
+    // point; by power at a point in a medium (ctx.n zero), where the equiangular sampling of a segment picks
+    // its light by power before the point is known and both strategies' MIS weights assume one choice.
+    const Light* pick_light(const LightSampleContext& ctx, float u, float* pmf) const {
+        return ctx.n == Normal3f{} ? scene_.light_sampler.sample(u, pmf)
+                                   : scene_.direct_light_sampler.sample(ctx, u, pmf);
+    }
+    float pick_light_pmf(const LightSampleContext& ctx, const Light* light) const {
+        return ctx.n == Normal3f{} ? scene_.light_sampler.pmf(light)
+                                   : scene_.direct_light_sampler.pmf(ctx, light);
+    }
+
     // Whether the scene has media at all: without, "volpath" renders with the surface path tracer.
     static bool needed(const Scene& scene);
     // Whether some material encloses a medium evaluated where a path enters it (textured subsurface).

@@ -1,0 +1,105 @@
+#include "illum/light/direct_light_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace illum {
+
+std::optional<LightSamplerKind> parse_light_sampler(std::string_view name) {
+    if (name == "uniform") return LightSamplerKind::uniform;
+    if (name == "power") return LightSamplerKind::power;
+    if (name == "bvh") return LightSamplerKind::bvh;
+    if (name == "exhaustive") return LightSamplerKind::exhaustive;
+    return std::nullopt;
+}
+
+const char* light_sampler_name(LightSamplerKind kind) {
+    switch (kind) {
+    case LightSamplerKind::uniform:
+        return "uniform";
+    case LightSamplerKind::power:
+        return "power";
+    case LightSamplerKind::bvh:
+        return "bvh";
+    case LightSamplerKind::exhaustive:
+        return "exhaustive";
+    }
+    return "power";
+}
+
+DirectLightSampler::DirectLightSampler(const std::vector<const Light*>& lights, LightSamplerKind kind)
+    : kind_(kind), lights_(lights) {
+    switch (kind) {
+    case LightSamplerKind::power:
+        power_ = PowerLightSampler(lights);
+        break;
+    case LightSamplerKind::bvh:
+        bvh_ = BvhLightSampler(lights);
+        break;
+    case LightSamplerKind::uniform:
+        break;
+    case LightSamplerKind::exhaustive:
+        for (const Light* l : lights) {
+            std::optional<LightBounds> b = l->bounds();
+            if (!b) {
+                unbounded_.push_back(l);
+            } else if (std::isfinite(b->phi) && b->phi > 0) {
+                bounded_.push_back(l);
+                bounds_.push_back(*b);
+            }
+        }
+        break;
+    }
+}
+
+const Light* DirectLightSampler::sample_other(const LightSampleContext& ctx, float u, float* pmf) const {
+    *pmf = 0;
+    if (kind_ == LightSamplerKind::uniform) {
+        if (lights_.empty()) return nullptr;
+        std::size_t i = std::min(std::size_t(u * float(lights_.size())), lights_.size() - 1);
+        *pmf = 1.0f / float(lights_.size());
+        return lights_[i];
+    }
+    // exhaustive: the unbounded lights as the BVH has them, then the bounded ones by importance.
+    if (bounded_.empty() && unbounded_.empty()) return nullptr;
+    float p_bounded = bounded_.empty() ? 0.0f : 1.0f / float(unbounded_.size() + 1);
+    float p_unbounded = 1 - p_bounded;
+    if (u < p_unbounded) {
+        std::size_t i =
+            std::min(std::size_t(u / p_unbounded * float(unbounded_.size())), unbounded_.size() - 1);
+        *pmf = p_unbounded / float(unbounded_.size());
+        return unbounded_[i];
+    }
+    u = (u - p_unbounded) / p_bounded;
+    float total = 0;
+    for (const LightBounds& b : bounds_) total += b.importance(ctx.p, ctx.n);
+    if (!(total > 0)) return nullptr;
+    float target = u * total, running = 0;
+    std::size_t chosen = bounded_.size();
+    for (std::size_t i = 0; i < bounds_.size(); ++i) {
+        float c = bounds_[i].importance(ctx.p, ctx.n);
+        if (c <= 0) continue;
+        chosen = i; // the last light of nonzero importance catches rounding at the top end
+        running += c;
+        if (target < running) break;
+    }
+    *pmf = p_bounded * bounds_[chosen].importance(ctx.p, ctx.n) / total;
+    return bounded_[chosen];
+}
+
+float DirectLightSampler::pmf_other(const LightSampleContext& ctx, const Light* light) const {
+    if (!light) return 0;
+    if (kind_ == LightSamplerKind::uniform) return lights_.empty() ? 0.0f : 1.0f / float(lights_.size());
+    float p_bounded = bounded_.empty() ? 0.0f : 1.0f / float(unbounded_.size() + 1);
+    if (std::find(unbounded_.begin(), unbounded_.end(), light) != unbounded_.end())
+        return (1 - p_bounded) / float(unbounded_.size());
+    float total = 0, mine = 0;
+    for (std::size_t i = 0; i < bounds_.size(); ++i) {
+        float c = bounds_[i].importance(ctx.p, ctx.n);
+        total += c;
+        if (bounded_[i] == light) mine = c;
+    }
+    return total > 0 ? p_bounded * mine / total : 0.0f;
+}
+
+} // namespace illum
