@@ -22,8 +22,8 @@ struct LightBounds {
     // The importance of the emitters inside for a receiver at p with normal n (zero: not on a surface),
     // an upper estimate of their contribution there (Conty Estevez & Kulla 2018, §4.3):
     //   phi · cos θ' / d² · cos θ'_i,
-    // with d the distance to the box's centre (no less than half the box's diagonal), θ' the angle from
-    // the normal cone to the direction towards p, narrowed by the angle θb the box subtends from p,
+    // with d the distance to the box's centre (no less than an eighth of the box's diagonal), θ' the angle
+    // from the normal cone to the direction towards p, narrowed by the angle θb the box subtends from p,
     //   θ' = max(0, θw - θo - θb),
     // zero once θ' ≥ θe (nothing inside emits towards p), and θ'_i = max(0, θi - θb) with θi the angle
     // between n and the direction to the centre (taken on either side: transmission receives from below).
