@@ -21,6 +21,16 @@ double gaussian_cdf_unnormalised(double x, double r, double sigma) {
 
 GaussianFilter::GaussianFilter(Vector2f radius, float sigma) : Filter(radius), sigma_(sigma) {
     if (!(sigma > 0)) throw Error("gaussian filter: sigma must be positive");
+    for (int axis = 0; axis < 2; ++axis) {
+        const std::size_t a = std::size_t(axis);
+        const double r = radius_[axis];
+        g_edge_[a] = gaussian(r, sigma_);
+        total_[a] = gaussian_cdf_unnormalised(r, r, sigma_);
+        for (int k = 0; k <= kTableSize; ++k)
+            inverse_cdf_[a][std::size_t(k)] = float(invert_cdf(double(k) / kTableSize, axis));
+        inverse_cdf_[a][0] = float(-r);
+        inverse_cdf_[a][kTableSize] = float(r);
+    }
 }
 
 float GaussianFilter::evaluate(Vector2f p) const {
@@ -30,27 +40,48 @@ float GaussianFilter::evaluate(Vector2f p) const {
     return float(gx * gy);
 }
 
-float GaussianFilter::sample_axis(float u, float r) const {
-    double total = gaussian_cdf_unnormalised(r, r, sigma_);
-    double target = u * total;
+double GaussianFilter::invert_cdf(double u, int axis) const {
+    const double r = radius_[axis];
+    const double target = u * total_[std::size_t(axis)];
     // Newton's method from x = 0 with bisection fallback; the CDF is monotone on [-r, r].
     double lo = -r, hi = r, x = 0;
-    for (int i = 0; i < 40; ++i) {
+    for (int i = 0; i < 60; ++i) {
         double f = gaussian_cdf_unnormalised(x, r, sigma_) - target;
-        if (std::abs(f) < 1e-9 * total) break;
+        if (std::abs(f) < 1e-12 * total_[std::size_t(axis)]) break;
         if (f > 0)
             hi = x;
         else
             lo = x;
-        double df = gaussian(x, sigma_) - gaussian(r, sigma_);
+        double df = gaussian(x, sigma_) - g_edge_[std::size_t(axis)];
         double xn = df > 0 ? x - f / df : 0.5 * (lo + hi);
         x = (xn > lo && xn < hi) ? xn : 0.5 * (lo + hi);
     }
-    return float(x);
+    return x;
+}
+
+float GaussianFilter::sample_axis(float u, int axis) const {
+    const std::size_t a = std::size_t(axis);
+    const double r = radius_[axis];
+    double s = double(u) * kTableSize;
+    int i = std::min(int(s), kTableSize - 1);
+    double x = std::lerp(double(inverse_cdf_[a][std::size_t(i)]), double(inverse_cdf_[a][std::size_t(i) + 1]),
+                         s - i);
+    // Newton's steps on CDF(x) = u · total, usually one or two. Near the ends, where the inverse is steep
+    // and the density vanishes, the table's guess is poor: there (rarely, the ends hold little of the
+    // filter) the slow inversion.
+    const double target = double(u) * total_[a];
+    for (int step = 0; step < 4; ++step) {
+        double df = gaussian(x, sigma_) - g_edge_[a];
+        if (!(df > 1e-3 * (gaussian(0, sigma_) - g_edge_[a]))) break;
+        double dx = (gaussian_cdf_unnormalised(x, r, sigma_) - target) / df;
+        x -= dx;
+        if (std::abs(dx) < 1e-6 * r) return float(std::clamp(x, -r, r));
+    }
+    return float(invert_cdf(double(u), axis));
 }
 
 FilterSample GaussianFilter::sample(Point2f u) const {
-    return {{sample_axis(u.x, radius_.x), sample_axis(u.y, radius_.y)}, 1};
+    return {{sample_axis(u.x, 0), sample_axis(u.y, 1)}, 1};
 }
 
 void TabulatedFilter::tabulate() {
@@ -84,10 +115,10 @@ MitchellFilter::MitchellFilter(Vector2f radius, float b, float c) : TabulatedFil
 
 float MitchellFilter::mitchell_1d(float x, float b, float c) {
     x = std::abs(x);
-    if (x <= 1)
-        return ((12 - 9 * b - 6 * c) * x * x * x + (-18 + 12 * b + 6 * c) * x * x + (6 - 2 * b)) / 6;
+    if (x <= 1) return ((12 - 9 * b - 6 * c) * x * x * x + (-18 + 12 * b + 6 * c) * x * x + (6 - 2 * b)) / 6;
     if (x <= 2)
-        return ((-b - 6 * c) * x * x * x + (6 * b + 30 * c) * x * x + (-12 * b - 48 * c) * x + (8 * b + 24 * c)) /
+        return ((-b - 6 * c) * x * x * x + (6 * b + 30 * c) * x * x + (-12 * b - 48 * c) * x +
+                (8 * b + 24 * c)) /
                6;
     return 0;
 }

@@ -3,6 +3,7 @@
 // depend on the thread count or the order tiles run in.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -72,9 +73,13 @@ Sampler make_sampler(const RenderOptions& options, int spp, Point2i resolution);
 
 // Runs a render loop's passes: pass(k0, k1) renders this process's samples k0..k1-1 (of its share,
 // render_group.h). Either all of the share's samples of options.spp at once, or, with a time budget,
-// passes of one sample per pixel until the budget is spent (on rank 0's clock in a group). With a
-// preview, passes of one sample per pixel either way, after each of which preview->frame gets snapshot(k),
-// the image after k passes. Returns the passes this process rendered.
+// passes until the budget is spent (on rank 0's clock in a group): of one sample per pixel at first, then
+// of twice as many each time (at most kMaxTimedPass), as long as the passes so far say the next one ends
+// within the budget. (A pass renders each pixel's samples one after another, which is faster than one
+// sample per pixel at a time: 161 samples per pixel in 10 s against 136 on scripts/many_lights.py.) In a
+// group, where the ranks agree only on whether to go on, and with a preview, passes of one sample per pixel;
+// after each of those preview->frame gets snapshot(k), the image after k passes. Returns the passes this
+// process rendered.
 template <class Pass, class Snapshot>
 int run_passes(const RenderOptions& options, Progress& progress, Pass&& pass, Snapshot&& snapshot) {
     const SampleShare share = sample_share(options.group);
@@ -84,11 +89,20 @@ int run_passes(const RenderOptions& options, Progress& progress, Pass&& pass, Sn
         pass(0, n);
         return n;
     }
-    int k = 0;
+    constexpr int kMaxTimedPass = 32;
+    const bool growing = timed && !options.group && !options.preview;
+    int k = 0, next = 1;
     bool more = timed || n > 0;
     while (more) {
-        pass(k, k + 1);
-        ++k;
+        int size = 1;
+        if (growing && k > 0) {
+            double per_pass = progress.elapsed_seconds() / k;
+            double remaining = options.time_budget - progress.elapsed_seconds();
+            size = std::clamp(int(remaining / std::max(per_pass, 1e-9)), 1, next);
+            next = std::min(2 * next, kMaxTimedPass);
+        }
+        pass(k, k + size);
+        k += size;
         double fraction = timed ? progress.elapsed_seconds() / options.time_budget : double(k) / n;
         if (timed) progress.set_fraction(fraction);
         more = timed ? progress.elapsed_seconds() < options.time_budget : k < n;
