@@ -71,15 +71,16 @@ public:
 
 private:
     // The exact inverse of the axis' CDF at u (Newton's method with bisection from x = 0: slow, used to
-    // build the table), and the same from the table's guess, refined by Newton's method (one or two
-    // steps from a guess within about 1e-5 of the radius; a sixth of a path tracer's time on small scenes
-    // went to the slow one).
+    // build the table), and the same from the table's guess, refined by Newton's method (usually one
+    // step; a sixth of a path tracer's time on small scenes went to the slow one).
     double invert_cdf(double u, int axis) const;
     float sample_axis(float u, int axis) const;
     float sigma_;
-    static constexpr int kTableSize = 256;
+    static constexpr int kTableSize = 1024;
     std::array<std::array<float, kTableSize + 1>, 2> inverse_cdf_{}; // x at u = k / kTableSize
-    std::array<double, 2> total_{}, g_edge_{};                       // ∫ (g - g(r)), g(r) per axis
+    // Per axis: ∫ (g - g(r)) over [-r, r], g(r), erf(-r / σ√2); and g(0).
+    std::array<double, 2> total_{}, g_edge_{}, erf_low_{};
+    double g_peak_ = 0;
 };
 
 // Filters with negative lobes, sampled as pbrt-v4's FilterSampler does: f tabulated at the centres of 32
