@@ -54,6 +54,7 @@ BvhLightSampler::BvhLightSampler(const std::vector<const Light*>& lights) {
     nodes_.reserve(2 * items.size() - 1);
     lights_.reserve(items.size());
     build(items, 0, items.size(), kNone);
+    for (Node& node : nodes_) node.prepared = PreparedLightBounds(node.bounds);
 }
 
 std::uint32_t BvhLightSampler::build(std::vector<Item>& items, std::size_t begin, std::size_t end,
@@ -125,8 +126,8 @@ std::uint32_t BvhLightSampler::build(std::vector<Item>& items, std::size_t begin
 float BvhLightSampler::first_child_probability(const Node& node, std::uint32_t index, Point3f p,
                                                Normal3f n) const {
     if (node.fixed_p0 >= 0) return node.fixed_p0;
-    float c0 = nodes_[index + 1].bounds.importance(p, n);
-    float c1 = nodes_[node.second_or_light].bounds.importance(p, n);
+    float c0 = nodes_[index + 1].prepared.importance(p, n);
+    float c1 = nodes_[node.second_or_light].prepared.importance(p, n);
     return c0 / (c0 + c1);
 }
 

@@ -32,6 +32,7 @@ private:
     static constexpr std::uint32_t kNone = ~std::uint32_t(0);
     struct Node {
         LightBounds bounds;
+        PreparedLightBounds prepared; // what sampling evaluates
         // A leaf: the index into lights_. Otherwise the second child (the first follows the node).
         std::uint32_t second_or_light = 0;
         std::uint32_t parent = kNone;

@@ -45,7 +45,7 @@ DirectLightSampler::DirectLightSampler(const std::vector<const Light*>& lights, 
                 unbounded_.push_back(l);
             } else if (std::isfinite(b->phi) && b->phi > 0) {
                 bounded_.push_back(l);
-                bounds_.push_back(*b);
+                bounds_.push_back(PreparedLightBounds(*b));
             }
         }
         break;
@@ -72,7 +72,7 @@ const Light* DirectLightSampler::sample_other(const LightSampleContext& ctx, flo
     }
     u = (u - p_unbounded) / p_bounded;
     float total = 0;
-    for (const LightBounds& b : bounds_) total += b.importance(ctx.p, ctx.n);
+    for (const PreparedLightBounds& b : bounds_) total += b.importance(ctx.p, ctx.n);
     if (!(total > 0)) return nullptr;
     float target = u * total, running = 0;
     std::size_t chosen = bounded_.size();

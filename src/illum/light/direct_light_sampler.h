@@ -63,7 +63,7 @@ private:
     BvhLightSampler bvh_;
     // exhaustive: the bounded lights with their bounds, and the unbounded ones.
     std::vector<const Light*> bounded_, unbounded_;
-    std::vector<LightBounds> bounds_;
+    std::vector<PreparedLightBounds> bounds_;
 };
 
 } // namespace illum

@@ -18,12 +18,19 @@ float sin_minus_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
 }
 } // namespace
 
+PreparedLightBounds::PreparedLightBounds(const LightBounds& b)
+    : centre(b.bounds.center()), r2(length_squared(b.bounds.diagonal()) / 4), w(b.w), phi(b.phi),
+      cos_theta_o(b.cos_theta_o), sin_theta_o(safe_sqrt(1 - b.cos_theta_o * b.cos_theta_o)),
+      cos_theta_e(b.cos_theta_e), two_sided(b.two_sided) {}
+
 float LightBounds::importance(Point3f p, Normal3f n) const {
-    // The box's bounding sphere: centre c, radius² r2 (directions_towards' cone, written out).
-    Point3f c = bounds.center();
-    Vector3f v = p - c;
+    return PreparedLightBounds(*this).importance(p, n);
+}
+
+float PreparedLightBounds::importance(Point3f p, Normal3f n) const {
+    // The box's bounding sphere: centre, radius² r2 (directions_towards' cone, written out).
+    Vector3f v = p - centre;
     float dist2 = length_squared(v);
-    float r2 = length_squared(bounds.diagonal()) / 4;
     // d no less than a quarter of the bounding radius: enough to keep a receiver near a small group's
     // centre from taking every sample, small enough that receivers inside a large node still tell its
     // near half from its far one. (Clamping at the radius itself, as first written, doubled the RMSE of
@@ -48,9 +55,8 @@ float LightBounds::importance(Point3f p, Normal3f n) const {
     }
 
     // θ' = max(0, θw - θo - θb), in two clamped steps.
-    float sin_o = safe_sqrt(1 - cos_theta_o * cos_theta_o);
-    float cos_x = cos_minus_clamped(sin_w, cos_w, sin_o, cos_theta_o);
-    float sin_x = sin_minus_clamped(sin_w, cos_w, sin_o, cos_theta_o);
+    float cos_x = cos_minus_clamped(sin_w, cos_w, sin_theta_o, cos_theta_o);
+    float sin_x = sin_minus_clamped(sin_w, cos_w, sin_theta_o, cos_theta_o);
     float cos_p = cos_minus_clamped(sin_x, cos_x, sin_b, cos_b);
     if (cos_p <= cos_theta_e) return 0;
 

@@ -31,6 +31,20 @@ struct LightBounds {
     float importance(Point3f p, Normal3f n) const;
 };
 
+// LightBounds with what importance() derives from them computed once (the box's centre and bounding
+// radius², sin θo): a light BVH evaluates it twice per level of every walk.
+struct PreparedLightBounds {
+    Point3f centre;
+    float r2 = 0;
+    Vector3f w{0, 0, 1};
+    float phi = 0, cos_theta_o = 1, sin_theta_o = 0, cos_theta_e = 0;
+    bool two_sided = false;
+
+    PreparedLightBounds() = default;
+    explicit PreparedLightBounds(const LightBounds& b);
+    float importance(Point3f p, Normal3f n) const; // LightBounds::importance
+};
+
 // A point emitter of strength phi sending light every way (θo = π, θe = π/2).
 LightBounds point_bounds(Point3f p, float phi);
 
