@@ -69,8 +69,9 @@ RenderRequest create_render_request(const EntityDesc& in, const EntityDesc& s, D
         std::string name = in.params.get_string("lightsampler", "bvh");
         std::optional<LightSamplerKind> kind = parse_light_sampler(name);
         if (!kind)
-            throw Error(ls->loc, fmt::format("unknown light sampler \"{}\" (uniform, power, bvh or exhaustive)",
-                                             name));
+            throw Error(
+                ls->loc,
+                fmt::format("unknown light sampler \"{}\" (uniform, power, bvh or exhaustive)", name));
         r.light_sampler = *kind;
     }
 
