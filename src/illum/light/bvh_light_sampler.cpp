@@ -35,21 +35,9 @@ float split_cost(const LightBounds& b, const Bounds3f& parent, int dim) {
 
 } // namespace
 
-BvhLightSampler::BvhLightSampler(const std::vector<const Light*>& lights) {
-    std::vector<Item> items;
-    std::uint32_t max_index = 0;
-    for (const Light* l : lights) max_index = std::max(max_index, l->index + 1);
-    leaf_of_.assign(max_index, kNone);
-    unbounded_index_.assign(max_index, 0);
-    for (const Light* l : lights) {
-        std::optional<LightBounds> b = l->bounds();
-        if (!b) {
-            unbounded_.push_back(l);
-            unbounded_index_[l->index] = 1;
-        } else if (std::isfinite(b->phi) && b->phi > 0) {
-            items.push_back({l, *b});
-        }
-    }
+BvhLightSampler::BvhLightSampler(const std::vector<const Light*>& lights) : split_(lights) {
+    leaf_of_.assign(split_.index_count(), kNone);
+    std::vector<Item> items = std::move(split_.bounded());
     if (items.empty()) return;
     nodes_.reserve(2 * items.size() - 1);
     lights_.reserve(items.size());
@@ -132,19 +120,9 @@ float BvhLightSampler::first_child_probability(const Node& node, std::uint32_t i
 }
 
 const Light* BvhLightSampler::sample(const LightSampleContext& ctx, float u, float* pmf) const {
-    *pmf = 0;
-    if (nodes_.empty() && unbounded_.empty()) return nullptr;
-    float p_tree = tree_probability();
-    float p_unbounded = 1 - p_tree;
-    if (u < p_unbounded) {
-        float x = u / p_unbounded * float(unbounded_.size());
-        std::size_t i = std::min(std::size_t(x), unbounded_.size() - 1);
-        *pmf = p_unbounded / float(unbounded_.size());
-        return unbounded_[i];
-    }
+    if (const Light* l = split_.pick_unbounded(&u, pmf)) return l;
     if (nodes_.empty()) return nullptr;
-    u = std::min((u - p_unbounded) / p_tree, 0x1.fffffep-1f);
-    float p = p_tree;
+    float p = split_.bounded_share();
     std::uint32_t index = 0;
     while (!nodes_[index].leaf) {
         const Node& node = nodes_[index];
@@ -168,11 +146,11 @@ const Light* BvhLightSampler::sample(const LightSampleContext& ctx, float u, flo
 }
 
 float BvhLightSampler::pmf(const LightSampleContext& ctx, const Light* light) const {
+    if (std::optional<float> p = split_.unbounded_pmf(light)) return *p;
     if (!light || light->index >= leaf_of_.size()) return 0;
-    if (unbounded_index_[light->index]) return (1 - tree_probability()) / float(unbounded_.size());
     std::uint32_t index = leaf_of_[light->index];
     if (index == kNone) return 0;
-    float p = tree_probability();
+    float p = split_.bounded_share();
     if (index == 0) return p;
     // Up from the leaf: at each parent, the chance of the child on the way.
     while (nodes_[index].parent != kNone) {

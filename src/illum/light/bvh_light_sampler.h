@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "illum/light/light.h"
+#include "illum/light/light_split.h"
 
 namespace illum {
 
@@ -44,19 +45,13 @@ private:
     };
     // The chance of the first child of interior node `index` at p, n (0/0: none can reach the receiver).
     float first_child_probability(const Node& node, std::uint32_t index, Point3f p, Normal3f n) const;
-    struct Item {
-        const Light* light;
-        LightBounds bounds;
-    };
+    using Item = BoundedLight;
     std::uint32_t build(std::vector<Item>& items, std::size_t begin, std::size_t end, std::uint32_t parent);
-    // The chance of picking the tree rather than one of the unbounded lights.
-    float tree_probability() const { return nodes_.empty() ? 0.0f : 1.0f / float(unbounded_.size() + 1); }
 
-    std::vector<const Light*> lights_;          // the tree's, by leaf
-    std::vector<const Light*> unbounded_;       // picked uniformly
-    std::vector<Node> nodes_;                   // depth first: a node's first child follows it
-    std::vector<std::uint32_t> leaf_of_;        // by Light::index: its leaf, or kNone
-    std::vector<std::uint8_t> unbounded_index_; // by Light::index: 1 when among unbounded_
+    LightSplit split_;                   // the tree holds its bounded lights
+    std::vector<const Light*> lights_;   // the tree's, by leaf
+    std::vector<Node> nodes_;            // depth first: a node's first child follows it
+    std::vector<std::uint32_t> leaf_of_; // by Light::index: its leaf, or kNone
 };
 
 } // namespace illum

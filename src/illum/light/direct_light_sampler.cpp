@@ -39,14 +39,10 @@ DirectLightSampler::DirectLightSampler(const std::vector<const Light*>& lights, 
     case LightSamplerKind::uniform:
         break;
     case LightSamplerKind::exhaustive:
-        for (const Light* l : lights) {
-            std::optional<LightBounds> b = l->bounds();
-            if (!b) {
-                unbounded_.push_back(l);
-            } else if (std::isfinite(b->phi) && b->phi > 0) {
-                bounded_.push_back(l);
-                bounds_.push_back(PreparedLightBounds(*b));
-            }
+        split_ = LightSplit(lights);
+        for (const BoundedLight& b : split_.bounded()) {
+            bounded_.push_back(b.light);
+            bounds_.push_back(PreparedLightBounds(b.bounds));
         }
         break;
     }
@@ -61,45 +57,34 @@ const Light* DirectLightSampler::sample_other(const LightSampleContext& ctx, flo
         return lights_[i];
     }
     // exhaustive: the unbounded lights as the BVH has them, then the bounded ones by importance.
-    if (bounded_.empty() && unbounded_.empty()) return nullptr;
-    float p_bounded = bounded_.empty() ? 0.0f : 1.0f / float(unbounded_.size() + 1);
-    float p_unbounded = 1 - p_bounded;
-    if (u < p_unbounded) {
-        std::size_t i =
-            std::min(std::size_t(u / p_unbounded * float(unbounded_.size())), unbounded_.size() - 1);
-        *pmf = p_unbounded / float(unbounded_.size());
-        return unbounded_[i];
-    }
-    u = (u - p_unbounded) / p_bounded;
+    if (const Light* l = split_.pick_unbounded(&u, pmf)) return l;
     float total = 0;
     for (const PreparedLightBounds& b : bounds_) total += b.importance(ctx.p, ctx.n);
     if (!(total > 0)) return nullptr;
-    float target = u * total, running = 0;
+    float target = u * total, running = 0, chosen_importance = 0;
     std::size_t chosen = bounded_.size();
     for (std::size_t i = 0; i < bounds_.size(); ++i) {
         float c = bounds_[i].importance(ctx.p, ctx.n);
         if (c <= 0) continue;
-        chosen = i; // the last light of nonzero importance catches rounding at the top end
+        chosen = i, chosen_importance = c; // the last light of nonzero importance catches rounding at the top
         running += c;
         if (target < running) break;
     }
-    *pmf = p_bounded * bounds_[chosen].importance(ctx.p, ctx.n) / total;
+    *pmf = split_.bounded_share() * chosen_importance / total;
     return bounded_[chosen];
 }
 
 float DirectLightSampler::pmf_other(const LightSampleContext& ctx, const Light* light) const {
     if (!light) return 0;
     if (kind_ == LightSamplerKind::uniform) return lights_.empty() ? 0.0f : 1.0f / float(lights_.size());
-    float p_bounded = bounded_.empty() ? 0.0f : 1.0f / float(unbounded_.size() + 1);
-    if (std::find(unbounded_.begin(), unbounded_.end(), light) != unbounded_.end())
-        return (1 - p_bounded) / float(unbounded_.size());
+    if (std::optional<float> p = split_.unbounded_pmf(light)) return *p;
     float total = 0, mine = 0;
     for (std::size_t i = 0; i < bounds_.size(); ++i) {
         float c = bounds_[i].importance(ctx.p, ctx.n);
         total += c;
         if (bounded_[i] == light) mine = c;
     }
-    return total > 0 ? p_bounded * mine / total : 0.0f;
+    return total > 0 ? split_.bounded_share() * mine / total : 0.0f;
 }
 
 } // namespace illum

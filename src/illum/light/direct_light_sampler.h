@@ -61,8 +61,9 @@ private:
     std::vector<const Light*> lights_;
     PowerLightSampler power_;
     BvhLightSampler bvh_;
-    // exhaustive: the bounded lights with their bounds, and the unbounded ones.
-    std::vector<const Light*> bounded_, unbounded_;
+    // exhaustive: the split, and the bounded lights with their bounds.
+    LightSplit split_;
+    std::vector<const Light*> bounded_;
     std::vector<PreparedLightBounds> bounds_;
 };
 
