@@ -8,7 +8,8 @@
 // - Heitz 2014, "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs" (anisotropic Λ,
 //   height-correlated G2 = 1 / (1 + Λ(wo) + Λ(wi)), visible normals D_wo(m) = G1(wo) max(0, wo·m) D(m) / cos
 //   θo).
-// - Heitz 2018, "Sampling the GGX Distribution of Visible Normals", JCGT 7(4) (GGX VNDF sampling).
+// - Heitz 2018, "Sampling the GGX Distribution of Visible Normals", JCGT 7(4) (GGX VNDF), sampled by
+//   Dupuy & Benyoub 2023, "Sampling Visible GGX Normals with Spherical Caps", CGF 42(8).
 //
 // D (with tan² θm (cos² φm / αx² + sin² φm / αy²) = e):
 //   Beckmann: D(m) = exp(-e) / (π αx αy cos⁴ θm)
@@ -16,10 +17,10 @@
 // Λ (with a = 1 / (α(w) tan θ), α(w)² = cos² φ αx² + sin² φ αy²):
 //   Beckmann: Λ = (erf(a) - 1) / 2 + exp(-a²) / (2 a sqrt(π))
 //   GGX:      Λ = (-1 + sqrt(1 + 1/a²)) / 2
-// Sampling: GGX samples its visible normals exactly (Heitz 2018). Beckmann samples D(m) cos θm (the slope
-// distribution is a 2D Gaussian, so slopes are α·sqrt(-log(1-u1))·(cos, sin) 2πu2), which is exact but
-// not visible-normal: a sampled normal facing away from wo is rejected by the models, and pdf_wm() is
-// the density actually used, so estimates stay unbiased.
+// Sampling: GGX samples its visible normals exactly (Heitz 2018, by spherical caps). Beckmann samples
+// D(m) cos θm (the slope distribution is a 2D Gaussian, so slopes are α·sqrt(-log(1-u1))·(cos, sin) 2πu2),
+// which is exact but not visible-normal: a sampled normal facing away from wo is rejected by the models,
+// and pdf_wm() is the density actually used, so estimates stay unbiased.
 #pragma once
 
 #include <cmath>
@@ -36,31 +37,37 @@ class MicrofacetDistribution {
 public:
     MicrofacetDistribution() = default;
     MicrofacetDistribution(MicrofacetType type, float alpha_x, float alpha_y)
-        : type_(type), ax_(alpha_x), ay_(alpha_y) {}
+        : type_(type), ax_(alpha_x), ay_(alpha_y), inv_ax2_(1 / (alpha_x * alpha_x)),
+          inv_ay2_(1 / (alpha_y * alpha_y)), inv_pi_axay_(1 / (kPi * alpha_x * alpha_y)) {}
 
     MicrofacetType type() const { return type_; }
     float alpha_x() const { return ax_; }
     float alpha_y() const { return ay_; }
 
-    // Normal distribution D(m) [sr^-1], normalised so that ∫ D(m) cos θm dωm = 1.
+    // Normal distribution D(m) [sr^-1], normalised so that ∫ D(m) cos θm dωm = 1. For a unit m,
+    // tan² θm cos² φm = x²/z² and tan² θm sin² φm = y²/z², so e = (x²/αx² + y²/αy²) / z² and
+    // cos⁴ θm (1 + e)² = (x²/αx² + y²/αy² + z²)²: no trigonometry and no square root.
     float D(Vector3f m) const {
-        float c2 = cos2_theta(m);
-        if (!(c2 > 0)) return 0;
-        float t2 = tan2_theta(m);
-        if (std::isinf(t2)) return 0;
-        float c4 = c2 * c2;
-        float e = t2 * (sqr(cos_phi(m) / ax_) + sqr(sin_phi(m) / ay_));
-        if (type_ == MicrofacetType::Beckmann) return std::exp(-e) / (kPi * ax_ * ay_ * c4);
-        return 1 / (kPi * ax_ * ay_ * c4 * sqr(1 + e));
+        float z2 = m.z * m.z;
+        if (!(z2 > 0)) return 0;
+        float s = m.x * m.x * inv_ax2_ + m.y * m.y * inv_ay2_; // e z²
+        if (type_ == MicrofacetType::Beckmann) {
+            float e = s / z2;
+            if (std::isinf(e)) return 0;
+            return std::exp(-e) * inv_pi_axay_ / (z2 * z2);
+        }
+        return inv_pi_axay_ / sqr(s + z2);
     }
 
-    // Smith Λ(w) for the direction w (either hemisphere).
+    // Smith Λ(w) for the direction w (either hemisphere). α(w)² tan² θ = (x² αx² + y² αy²) / z² for a
+    // unit w.
     float Lambda(Vector3f w) const {
-        float t2 = tan2_theta(w);
-        if (std::isinf(t2) || std::isnan(t2)) return 1e30f;
-        float alpha2 = sqr(cos_phi(w) * ax_) + sqr(sin_phi(w) * ay_);
-        if (type_ == MicrofacetType::GGX) return (std::sqrt(1 + alpha2 * t2) - 1) / 2;
-        float a2t2 = alpha2 * t2;
+        float z2 = w.z * w.z;
+        if (!(z2 > 0)) return 1e30f;
+        float a2t2 = (sqr(w.x * ax_) + sqr(w.y * ay_)) / z2;
+        if (std::isinf(a2t2) || std::isnan(a2t2)) return 1e30f;
+        // GGX: (sqrt(1 + a2t2) - 1) / 2, written without the cancellation at small a2t2.
+        if (type_ == MicrofacetType::GGX) return a2t2 / (2 * (std::sqrt(1 + a2t2) + 1));
         if (!(a2t2 > 0)) return 0;
         float a = 1 / std::sqrt(a2t2);
         if (a > 8) return 0; // Λ < 1e-29
@@ -83,6 +90,14 @@ public:
         if (type_ == MicrofacetType::GGX) return D_visible(w, m);
         return D(m) * abs_cos_theta(m);
     }
+    // The same with D(m) and Λ(w) at hand (a model that also evaluates f needs them anyway).
+    float pdf_wm(Vector3f w, Vector3f m, float d_m, float lambda_w) const {
+        if (type_ != MicrofacetType::GGX) return d_m * abs_cos_theta(m);
+        float c = abs_cos_theta(w);
+        if (c == 0) return 0;
+        Vector3f wf = w.z < 0 ? -w : w;
+        return std::max(0.0f, dot(wf, m)) * d_m / ((1 + lambda_w) * c);
+    }
 
     // Samples a microfacet normal on +z seen from w (w is flipped to +z first).
     Vector3f sample_wm(Vector3f w, Point2f u) const {
@@ -92,23 +107,24 @@ public:
             float sx = ax_ * r * std::cos(phi), sy = ay_ * r * std::sin(phi);
             return normalize(Vector3f(-sx, -sy, 1));
         }
-        // Heitz 2018, listing 1: stretch the view direction, sample the projected hemisphere, unstretch.
+        // Visible normals by spherical caps (Dupuy & Benyoub 2023, "Sampling Visible GGX Normals with
+        // Spherical Caps", listing 3): in the stretched configuration the visible normals of the view wh
+        // are h = c + wh with c uniform on the spherical cap z > -wh.z of the unit sphere; unstretch h.
+        // The same density as Heitz 2018's projected-disk construction, without its tangent frame.
         if (w.z < 0) w = -w;
         Vector3f wh = normalize(Vector3f(ax_ * w.x, ay_ * w.y, w.z));
-        float len2 = wh.x * wh.x + wh.y * wh.y;
-        Vector3f t1 = len2 > 0 ? Vector3f(-wh.y, wh.x, 0) / std::sqrt(len2) : Vector3f(1, 0, 0);
-        Vector3f t2 = cross(wh, t1);
-        float r = std::sqrt(u.x), phi = 2 * kPi * u.y;
-        float p1 = r * std::cos(phi), p2 = r * std::sin(phi);
-        float s = 0.5f * (1 + wh.z);
-        p2 = (1 - s) * safe_sqrt(1 - p1 * p1) + s * p2;
-        Vector3f nh = t1 * p1 + t2 * p2 + wh * safe_sqrt(1 - p1 * p1 - p2 * p2);
-        return normalize(Vector3f(ax_ * nh.x, ay_ * nh.y, std::max(1e-6f, nh.z)));
+        float phi = 2 * kPi * u.x;
+        float z = std::fma(1 - u.y, 1 + wh.z, -wh.z);
+        float sin_theta = safe_sqrt(1 - z * z);
+        Vector3f h(sin_theta * std::cos(phi) + wh.x, sin_theta * std::sin(phi) + wh.y, z + wh.z);
+        return normalize(Vector3f(ax_ * h.x, ay_ * h.y, std::max(1e-6f, h.z)));
     }
 
 private:
     MicrofacetType type_ = MicrofacetType::GGX;
     float ax_ = 0.3f, ay_ = 0.3f;
+    // 1/αx², 1/αy² and 1/(π αx αy), for D.
+    float inv_ax2_ = 1 / (0.3f * 0.3f), inv_ay2_ = 1 / (0.3f * 0.3f), inv_pi_axay_ = 1 / (kPi * 0.3f * 0.3f);
 };
 
 // Refraction of w about the normal n (either side) with relative index eta = n_inside / n_outside,

@@ -45,16 +45,21 @@ public:
         return Bsdf3(F * (distrib_.D(h) * distrib_.G(wo, wi) / (4 * co * ci)));
     }
 
-    std::optional<BSDFSample> sample(Vector3f wo, float, Point2f u, TransportMode mode) const override {
+    std::optional<BSDFSample> sample(Vector3f wo, float, Point2f u, TransportMode) const override {
         if (wo.z == 0) return std::nullopt;
         Vector3f wm = distrib_.sample_wm(wo, u);
         Vector3f wof = wo.z < 0 ? -wo : wo;
         if (dot(wof, wm) <= 0) return std::nullopt;
         Vector3f wi = reflect(wo, wm);
         if (!same_hemisphere(wo, wi)) return std::nullopt;
-        float pdf = distrib_.pdf_wm(wo, wm) / (4 * abs_dot(wo, wm));
+        // D(wm) and Λ(wo) serve the density and the value (f() would find wm again as the half vector).
+        const float d = distrib_.D(wm), lambda_o = distrib_.Lambda(wo);
+        const float cos_om = abs_dot(wo, wm);
+        float pdf = distrib_.pdf_wm(wo, wm, d, lambda_o) / (4 * cos_om);
         if (!(pdf > 0)) return std::nullopt;
-        return BSDFSample{wi, f(wo, wi, mode), SolidAnglePdf(pdf), kGlossyReflection};
+        float g = 1 / (1 + lambda_o + distrib_.Lambda(wi));
+        SampledSpectrum f = fresnel_(cos_om) * (d * g / (4 * abs_cos_theta(wo) * abs_cos_theta(wi)));
+        return BSDFSample{wi, Bsdf3(f), SolidAnglePdf(pdf), kGlossyReflection};
     }
 
     SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode) const override {

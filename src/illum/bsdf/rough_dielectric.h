@@ -65,24 +65,37 @@ public:
         Vector3f wm = distrib_.sample_wm(wo, u);
         Vector3f wof = wo.z < 0 ? -wo : wo;
         if (dot(wof, wm) <= 0) return std::nullopt;
-        float pr, pt;
-        lobe_weights(dot(wo, wm), lobes, &pr, &pt);
+        // F, D(wm) and Λ(wo) serve the lobe choice, the density and the value alike (f() would find the
+        // same microfacet again from wo and wi).
+        const float cos_om = dot(wo, wm);
+        const float F = fresnel_(cos_om);
+        const float pr = lobes == Lobes::Transmission ? 0 : F;
+        const float pt = lobes == Lobes::Reflection ? 0 : 1 - F;
         if (!(pr + pt > 0)) return std::nullopt;
+        const float d = distrib_.D(wm), lambda_o = distrib_.Lambda(wo);
+        const float pdf_wm = distrib_.pdf_wm(wo, wm, d, lambda_o);
+        const float co = cos_theta(wo);
         if (uc < pr / (pr + pt)) {
             Vector3f wi = reflect(wo, wm);
             if (!same_hemisphere(wo, wi)) return std::nullopt;
-            float pdf = distrib_.pdf_wm(wo, wm) / (4 * abs_dot(wo, wm)) * pr / (pr + pt);
+            float pdf = pdf_wm / (4 * std::abs(cos_om)) * pr / (pr + pt);
             if (!(pdf > 0)) return std::nullopt;
-            return BSDFSample{wi, f(wo, wi, mode), SolidAnglePdf(pdf), kGlossyReflection};
+            float g = 1 / (1 + lambda_o + distrib_.Lambda(wi));
+            float fr = d * g * F / std::abs(4 * cos_theta(wi) * co);
+            return BSDFSample{wi, Bsdf3(SampledSpectrum(fr)), SolidAnglePdf(pdf), kGlossyReflection};
         }
         Vector3f wi;
         float etap;
         if (!refract(wo, wm, fresnel_.eta, &etap, &wi)) return std::nullopt;
         if (same_hemisphere(wo, wi) || wi.z == 0) return std::nullopt;
-        float denom = sqr(dot(wi, wm) + dot(wo, wm) / etap);
-        float pdf = distrib_.pdf_wm(wo, wm) * abs_dot(wi, wm) / denom * pt / (pr + pt);
+        const float cos_im = dot(wi, wm);
+        float denom = sqr(cos_im + cos_om / etap);
+        float pdf = pdf_wm * std::abs(cos_im) / denom * pt / (pr + pt);
         if (!(pdf > 0)) return std::nullopt;
-        BSDFSample s{wi, f(wo, wi, mode), SolidAnglePdf(pdf), kGlossyTransmission};
+        float g = 1 / (1 + lambda_o + distrib_.Lambda(wi));
+        float ft = d * (1 - F) * g * std::abs(cos_im * cos_om / (denom * cos_theta(wi) * co));
+        if (mode == TransportMode::Radiance) ft /= etap * etap;
+        BSDFSample s{wi, Bsdf3(SampledSpectrum(ft)), SolidAnglePdf(pdf), kGlossyTransmission};
         s.eta = etap;
         return s;
     }
