@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "illum/math/fast_trig.h"
 #include "illum/math/frame.h"
 #include "illum/math/vector.h"
 
@@ -113,10 +114,11 @@ public:
         // The same density as Heitz 2018's projected-disk construction, without its tangent frame.
         if (w.z < 0) w = -w;
         Vector3f wh = normalize(Vector3f(ax_ * w.x, ay_ * w.y, w.z));
-        float phi = 2 * kPi * u.x;
+        float sin_phi, cos_phi;
+        fast_sincos_2pi(u.x, &sin_phi, &cos_phi);
         float z = std::fma(1 - u.y, 1 + wh.z, -wh.z);
         float sin_theta = safe_sqrt(1 - z * z);
-        Vector3f h(sin_theta * std::cos(phi) + wh.x, sin_theta * std::sin(phi) + wh.y, z + wh.z);
+        Vector3f h(sin_theta * cos_phi + wh.x, sin_theta * sin_phi + wh.y, z + wh.z);
         return normalize(Vector3f(ax_ * h.x, ay_ * h.y, std::max(1e-6f, h.z)));
     }
 

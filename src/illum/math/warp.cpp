@@ -3,30 +3,34 @@
 #include <algorithm>
 #include <cmath>
 
+#include "illum/math/fast_trig.h"
+
 namespace illum {
 
 Point2f sample_uniform_disk_concentric(Point2f u) {
     float ox = 2 * u.x - 1, oy = 2 * u.y - 1;
     if (ox == 0 && oy == 0) return {0, 0};
-    float r, theta;
+    // θ = (π/4)(oy/ox) on the wedges around ±x; around ±y θ = π/2 - (π/4)(ox/oy), whose cosine and sine
+    // are the sine and cosine of (π/4)(ox/oy): one angle in [-π/4, π/4] either way.
+    float s, c;
     if (std::abs(ox) > std::abs(oy)) {
-        r = ox;
-        theta = (kPi / 4) * (oy / ox);
-    } else {
-        r = oy;
-        theta = kPiOver2 - (kPi / 4) * (ox / oy);
+        fast_sincos_quarter((kPi / 4) * (oy / ox), &s, &c);
+        return {ox * c, ox * s};
     }
-    return {r * std::cos(theta), r * std::sin(theta)};
+    fast_sincos_quarter((kPi / 4) * (ox / oy), &s, &c);
+    return {oy * s, oy * c};
 }
 
 Point2f sample_uniform_disk_polar(Point2f u) {
-    float r = std::sqrt(u.x), theta = 2 * kPi * u.y;
-    return {r * std::cos(theta), r * std::sin(theta)};
+    float r = std::sqrt(u.x), s, c;
+    fast_sincos_2pi(u.y, &s, &c);
+    return {r * c, r * s};
 }
 
 Vector3f sample_uniform_hemisphere(Point2f u) {
-    float z = u.x, r = safe_sqrt(1 - z * z), phi = 2 * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    float z = u.x, r = safe_sqrt(1 - z * z), s, c;
+    fast_sincos_2pi(u.y, &s, &c);
+    return {r * c, r * s, z};
 }
 
 Vector3f sample_cosine_hemisphere(Point2f u) {
@@ -36,14 +40,16 @@ Vector3f sample_cosine_hemisphere(Point2f u) {
 }
 
 Vector3f sample_uniform_sphere(Point2f u) {
-    float z = 1 - 2 * u.x, r = safe_sqrt(1 - z * z), phi = 2 * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    float z = 1 - 2 * u.x, r = safe_sqrt(1 - z * z), s, c;
+    fast_sincos_2pi(u.y, &s, &c);
+    return {r * c, r * s, z};
 }
 
 Vector3f sample_uniform_cone(Point2f u, float cos_theta_max) {
     float cos_theta = (1 - u.x) + u.x * cos_theta_max;
-    float sin_theta = safe_sqrt(1 - cos_theta * cos_theta), phi = u.y * 2 * kPi;
-    return spherical_direction(sin_theta, cos_theta, phi);
+    float sin_theta = safe_sqrt(1 - cos_theta * cos_theta), s, c;
+    fast_sincos_2pi(u.y, &s, &c);
+    return {sin_theta * c, sin_theta * s, cos_theta};
 }
 
 std::array<float, 3> sample_uniform_triangle(Point2f u) {
