@@ -55,6 +55,20 @@ PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, int wid
     Screen s = screen ? *screen : default_screen(width, height);
     float tan_half = std::tan(fov_deg * kPi / 360.0f);
     raster_to_screen(s, width, height, tan_half, &ax_, &bx_, &ay_, &by_);
+    const Matrix4& c = camera_from_world_.matrix();
+    const Matrix4& w = world_from_camera_.matrix();
+    auto affine = [](const Matrix4& m) {
+        return m(3, 0) == 0 && m(3, 1) == 0 && m(3, 2) == 0 && m(3, 3) == 1;
+    };
+    affine_ = affine(c) && affine(w);
+    for (int r = 0; r < 3; ++r) {
+        row_[r] = Vector3f(float(c(r, 0)), float(c(r, 1)), float(c(r, 2)));
+        shift_[r] = float(c(r, 3));
+    }
+    lens_centre_ = world_from_camera_(Point3f{0, 0, 0});
+    lens_x_ = world_from_camera_(Vector3f{1, 0, 0});
+    lens_y_ = world_from_camera_(Vector3f{0, 1, 0});
+    lens_normal_ = normalize(world_from_camera_(Vector3f{0, 0, 1}));
 }
 
 std::optional<CameraRay> PerspectiveCamera::generate_ray(Point2f p, Point2f u_lens, float) const {

@@ -105,11 +105,25 @@ public:
     CameraRayPdf pdf_we(const Ray& ray) const override;
 
 private:
+    // W_e of a ray with unit camera-space direction d from camera-space origin o; sets *p_raster.
+    Importance we_camera(Point3f o, Vector3f d, Point2f* p_raster) const;
+    Point3f to_camera(Point3f p) const;
+    Vector3f to_camera(Vector3f v) const;
+
     Transform world_from_camera_, camera_from_world_;
     float lens_radius_, focal_distance_;
     // Raster (x, y) -> camera-space point on the z = 1 plane: (ax + bx x, ay + by y, 1).
     float ax_, bx_, ay_, by_;
     int width_, height_;
+    // For the importance functions, which light tracing and BDPT call several times per connection: the
+    // camera-from-world rows (linear part and translation) in floats when the transform is affine (it is
+    // for every camera a scene can give; a projective one takes the Transform), and the lens in world
+    // space: its centre, its axes (the images of camera x and y) and its unit normal.
+    bool affine_ = false;
+    Vector3f row_[3];
+    float shift_[3] = {0, 0, 0};
+    Point3f lens_centre_;
+    Vector3f lens_x_, lens_y_, lens_normal_;
 };
 
 // An orthographic camera: parallel rays along +z; the screen window is in camera-space units.
