@@ -54,7 +54,7 @@ public:
         float s = m.x * m.x * inv_ax2_ + m.y * m.y * inv_ay2_; // e z²
         if (type_ == MicrofacetType::Beckmann) {
             float e = s / z2;
-            if (std::isinf(e)) return 0;
+            if (std::isinf(e) || !(z2 * z2 > 0)) return 0;
             return std::exp(-e) * inv_pi_axay_ / (z2 * z2);
         }
         return inv_pi_axay_ / sqr(s + z2);
