@@ -14,6 +14,7 @@
 #include "commands.h"
 #include "illum/math/rng.h"
 #include "illum/render/photon_tracer.h"
+#include "illum/render/render_arena.h"
 #include "illum/render/sppm_integrator.h"
 #include "illum/scene/build.h"
 #include "illum/util/error.h"
@@ -88,16 +89,20 @@ void run(const PhotonsArgs& args) {
     constexpr std::uint64_t kChunk = 4096;
     const std::size_t chunks = std::size_t((n + kChunk - 1) / kChunk);
     std::vector<std::vector<PhotonPoint>> parts(chunks);
-    tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
-        Sampler sampler = prototype;
-        ScratchArena arena;
-        SampledWavelengths lambda = SampledWavelengths::rgb_mode();
-        for (std::uint64_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i)
-            tracer.trace(i, lambda, sampler, arena, [&](const PhotonArrival& a) {
-                Color3 power = scene->sensor.to_rgb(Radiance3(a.beta * share), a.lambda); // film RGB
-                parts[c].push_back({a.hit.p.x, a.hit.p.y, a.hit.p.z, -a.wi.x, -a.wi.y, -a.wi.z, power.r,
-                                    power.g, power.b, std::uint8_t(std::min(a.bounce, 255))});
-            });
+    // In a render's arena, as the renderer traces them (denormals flushed: render_arena.h).
+    RenderArena render_arena(int(tbb::this_task_arena::max_concurrency()));
+    render_arena.execute([&] {
+        tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
+            Sampler sampler = prototype;
+            ScratchArena arena;
+            SampledWavelengths lambda = SampledWavelengths::rgb_mode();
+            for (std::uint64_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i)
+                tracer.trace(i, lambda, sampler, arena, [&](const PhotonArrival& a) {
+                    Color3 power = scene->sensor.to_rgb(Radiance3(a.beta * share), a.lambda); // film RGB
+                    parts[c].push_back({a.hit.p.x, a.hit.p.y, a.hit.p.z, -a.wi.x, -a.wi.y, -a.wi.z, power.r,
+                                        power.g, power.b, std::uint8_t(std::min(a.bounce, 255))});
+                });
+        });
     });
     std::vector<PhotonPoint> points;
     double emitted[3] = {0, 0, 0};

@@ -15,6 +15,7 @@
 #include "illum/camera/film.h"
 #include "illum/camera/splat_film.h"
 #include "illum/render/path_vertex.h"
+#include "illum/render/render_arena.h"
 #include "illum/util/error.h"
 #include "illum/util/progress.h"
 
@@ -182,7 +183,7 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
     const std::size_t pixels = std::size_t(w) * h;
     int threads = render_threads(options);
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-    tbb::task_arena arena(threads);
+    RenderArena arena(threads);
 
     const Sampler prototype = make_sampler(options, options.spp > 0 ? options.spp : 1, {w, h});
     tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });

@@ -15,6 +15,7 @@
 #include "illum/medium/sample_majorant.h"
 #include "illum/render/chunked_schedule.h"
 #include "illum/render/direct_view_mis.h"
+#include "illum/render/render_arena.h"
 #include "illum/render/shadow_transmittance.h"
 #include "illum/render/texture_footprint.h"
 #include "illum/util/error.h"
@@ -257,7 +258,7 @@ RenderResult LightPathIntegrator::render_image(const RenderOptions& options) con
     const std::size_t pixels = std::size_t(w) * h;
     int threads = render_threads(options);
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-    tbb::task_arena arena(threads);
+    RenderArena arena(threads);
 
     const Sampler prototype = make_sampler(options, options.spp > 0 ? options.spp : 1, {w, h});
     tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });

@@ -8,6 +8,7 @@
 
 #include "illum/math/rng.h"
 #include "illum/math/warp.h"
+#include "illum/render/render_arena.h"
 
 namespace illum {
 
@@ -23,7 +24,7 @@ RayRate measure_incoherent_rays(const Scene& scene, std::uint64_t count, int thr
         r = Ray{o, sample_uniform_sphere({u0, u1}), kInfinity};
     }
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-    tbb::task_arena arena(threads);
+    RenderArena arena(threads);
     std::vector<float> t(count);
     auto start = std::chrono::steady_clock::now();
     arena.execute([&] {

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "illum/camera/film.h"
+#include "illum/render/render_arena.h"
 #include "illum/util/error.h"
 #include "illum/util/progress.h"
 
@@ -103,7 +104,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     const int w = scene.width, h = scene.height;
     int threads = render_threads(options);
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-    tbb::task_arena arena(threads);
+    RenderArena arena(threads);
 
     Film film(w, h);
     std::vector<Tile> tiles = make_tiles(bounds, options.tile_size);

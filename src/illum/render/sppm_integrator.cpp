@@ -19,6 +19,7 @@
 #include "illum/light/light.h"
 #include "illum/math/rng.h"
 #include "illum/render/photon_tracer.h"
+#include "illum/render/render_arena.h"
 #include "illum/render/visible_point_grid.h"
 #include "illum/util/error.h"
 #include "illum/util/progress.h"
@@ -443,7 +444,7 @@ RenderResult SppmRender::run(SppmStats* stats) {
     spectral_ = options_.spectral;
     int threads = render_threads(options_);
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-    tbb::task_arena arena(threads);
+    RenderArena arena(threads);
 
     for (int y = 0; y < h_; y += kTileSize)
         for (int x = 0; x < w_; x += kTileSize)

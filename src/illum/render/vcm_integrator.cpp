@@ -14,6 +14,7 @@
 #include "illum/medium/entry_medium.h"
 #include "illum/render/light_vertex_grid.h"
 #include "illum/render/path_vertex.h"
+#include "illum/render/render_arena.h"
 #include "illum/render/vcm_mis.h"
 #include "illum/util/error.h"
 #include "illum/util/progress.h"
@@ -541,7 +542,7 @@ void VcmRender::camera_pass(int sample_index, tbb::task_arena& arena) {
 RenderResult VcmRender::run(VcmStats* stats) {
     const int threads = render_threads(options_);
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-    tbb::task_arena arena(threads);
+    RenderArena arena(threads);
     Sampler prototype(render_sampler_kind(options_), options_.spp > 0 ? options_.spp : 1, options_.seed);
     contexts_ = std::make_unique<tbb::enumerable_thread_specific<ThreadContext>>(
         [&] { return ThreadContext(prototype); });
