@@ -109,7 +109,7 @@ public:
             return normalize(Vector3f(-sx, -sy, 1));
         }
         // Visible normals by spherical caps (Dupuy & Benyoub 2023, "Sampling Visible GGX Normals with
-        // Spherical Caps", listing 3): in the stretched configuration the visible normals of the view wh
+        // Spherical Caps"): in the stretched configuration the visible normals of the view wh
         // are h = c + wh with c uniform on the spherical cap z > -wh.z of the unit sphere; unstretch h.
         // The same density as Heitz 2018's projected-disk construction, without its tangent frame.
         if (w.z < 0) w = -w;
