@@ -90,7 +90,8 @@ void run(const PhotonsArgs& args) {
     const std::size_t chunks = std::size_t((n + kChunk - 1) / kChunk);
     std::vector<std::vector<PhotonPoint>> parts(chunks);
     // In a render's arena, as the renderer traces them (denormals flushed: render_arena.h).
-    RenderArena render_arena(int(tbb::this_task_arena::max_concurrency()));
+    const int threads = tbb::this_task_arena::max_concurrency();
+    RenderArena render_arena(threads);
     render_arena.execute([&] {
         tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
             Sampler sampler = prototype;
