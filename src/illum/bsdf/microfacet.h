@@ -78,26 +78,25 @@ public:
     // Height-correlated masking-shadowing.
     float G(Vector3f wo, Vector3f wi) const { return 1 / (1 + Lambda(wo) + Lambda(wi)); }
 
-    // Visible normal distribution D_w(m) = G1(w) max(0, w·m) D(m) / |cos θw| (w flipped to +z).
-    float D_visible(Vector3f w, Vector3f m) const {
-        float c = abs_cos_theta(w);
-        if (c == 0) return 0;
-        Vector3f wf = w.z < 0 ? -w : w;
-        return G1(w) * std::max(0.0f, dot(wf, m)) * D(m) / c;
-    }
-
-    // Density of sample_wm's normals: D_w(m) for GGX, D(m) cos θm for Beckmann. m is on +z.
-    float pdf_wm(Vector3f w, Vector3f m) const {
-        if (type_ == MicrofacetType::GGX) return D_visible(w, m);
-        return D(m) * abs_cos_theta(m);
-    }
-    // The same with D(m) and Λ(w) at hand (a model that also evaluates f needs them anyway).
-    float pdf_wm(Vector3f w, Vector3f m, float d_m, float lambda_w) const {
-        if (type_ != MicrofacetType::GGX) return d_m * abs_cos_theta(m);
+    // Visible normal distribution D_w(m) = G1(w) max(0, w·m) D(m) / |cos θw| (w flipped to +z), with
+    // G1 = 1 / (1 + Λ(w)); the second form takes D(m) and Λ(w) at hand (a model that also evaluates f has
+    // them).
+    float D_visible(Vector3f w, Vector3f m) const { return D_visible(w, m, D(m), Lambda(w)); }
+    float D_visible(Vector3f w, Vector3f m, float d_m, float lambda_w) const {
         float c = abs_cos_theta(w);
         if (c == 0) return 0;
         Vector3f wf = w.z < 0 ? -w : w;
         return std::max(0.0f, dot(wf, m)) * d_m / ((1 + lambda_w) * c);
+    }
+
+    // Density of sample_wm's normals: D_w(m) for GGX, D(m) cos θm for Beckmann. m is on +z.
+    float pdf_wm(Vector3f w, Vector3f m) const {
+        return pdf_wm(w, m, D(m), type_ == MicrofacetType::GGX ? Lambda(w) : 0.0f);
+    }
+    // The same with D(m) and Λ(w) at hand (Λ is not read for Beckmann).
+    float pdf_wm(Vector3f w, Vector3f m, float d_m, float lambda_w) const {
+        if (type_ == MicrofacetType::GGX) return D_visible(w, m, d_m, lambda_w);
+        return d_m * abs_cos_theta(m);
     }
 
     // Samples a microfacet normal on +z seen from w (w is flipped to +z first).
