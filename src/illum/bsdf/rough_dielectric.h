@@ -41,13 +41,9 @@ public:
         // Microfacets seen from behind do not contribute.
         if (dot(wm, wi) * ci < 0 || dot(wm, wo) * co < 0) return {};
         float F = fresnel_(dot(wo, wm));
-        if (reflect)
-            return Bsdf3(SampledSpectrum(distrib_.D(wm) * distrib_.G(wo, wi) * F / std::abs(4 * ci * co)));
-        float denom = sqr(dot(wi, wm) + dot(wo, wm) / etap) * ci * co;
-        float ft =
-            distrib_.D(wm) * (1 - F) * distrib_.G(wo, wi) * std::abs(dot(wi, wm) * dot(wo, wm) / denom);
-        if (mode == TransportMode::Radiance) ft /= etap * etap;
-        return Bsdf3(SampledSpectrum(ft));
+        if (reflect) return Bsdf3(SampledSpectrum(reflected(distrib_.D(wm), distrib_.G(wo, wi), F, ci, co)));
+        return Bsdf3(SampledSpectrum(transmitted(distrib_.D(wm), distrib_.G(wo, wi), F, dot(wi, wm),
+                                                 dot(wo, wm), etap, ci, co, mode)));
     }
 
     std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override {
@@ -69,8 +65,8 @@ public:
         // same microfacet again from wo and wi).
         const float cos_om = dot(wo, wm);
         const float F = fresnel_(cos_om);
-        const float pr = lobes == Lobes::Transmission ? 0 : F;
-        const float pt = lobes == Lobes::Reflection ? 0 : 1 - F;
+        float pr, pt;
+        lobe_weights(F, lobes, &pr, &pt);
         if (!(pr + pt > 0)) return std::nullopt;
         const float d = distrib_.D(wm), lambda_o = distrib_.Lambda(wo);
         const float pdf_wm = distrib_.pdf_wm(wo, wm, d, lambda_o);
@@ -81,8 +77,8 @@ public:
             float pdf = pdf_wm / (4 * std::abs(cos_om)) * pr / (pr + pt);
             if (!(pdf > 0)) return std::nullopt;
             float g = 1 / (1 + lambda_o + distrib_.Lambda(wi));
-            float fr = d * g * F / std::abs(4 * cos_theta(wi) * co);
-            return BSDFSample{wi, Bsdf3(SampledSpectrum(fr)), SolidAnglePdf(pdf), kGlossyReflection};
+            return BSDFSample{wi, Bsdf3(SampledSpectrum(reflected(d, g, F, cos_theta(wi), co))),
+                              SolidAnglePdf(pdf), kGlossyReflection};
         }
         Vector3f wi;
         float etap;
@@ -93,8 +89,7 @@ public:
         float pdf = pdf_wm * std::abs(cos_im) / denom * pt / (pr + pt);
         if (!(pdf > 0)) return std::nullopt;
         float g = 1 / (1 + lambda_o + distrib_.Lambda(wi));
-        float ft = d * (1 - F) * g * std::abs(cos_im * cos_om / (denom * cos_theta(wi) * co));
-        if (mode == TransportMode::Radiance) ft /= etap * etap;
+        float ft = transmitted(d, g, F, cos_im, cos_om, etap, cos_theta(wi), co, mode);
         BSDFSample s{wi, Bsdf3(SampledSpectrum(ft)), SolidAnglePdf(pdf), kGlossyTransmission};
         s.eta = etap;
         return s;
@@ -114,7 +109,7 @@ public:
         if (wm.z < 0) wm = -wm;
         if (dot(wm, wi) * ci < 0 || dot(wm, wo) * co < 0) return SolidAnglePdf(0);
         float pr, pt;
-        lobe_weights(dot(wo, wm), lobes, &pr, &pt);
+        lobe_weights(fresnel_(dot(wo, wm)), lobes, &pr, &pt);
         if (!(pr + pt > 0)) return SolidAnglePdf(0);
         if (reflect) return SolidAnglePdf(distrib_.pdf_wm(wo, wm) / (4 * abs_dot(wo, wm)) * pr / (pr + pt));
         float denom = sqr(dot(wi, wm) + dot(wo, wm) / etap);
@@ -122,10 +117,21 @@ public:
     }
 
 private:
-    void lobe_weights(float cos_om, Lobes lobes, float* pr, float* pt) const {
-        float R = fresnel_(cos_om);
+    // The lobes' weights at a microfacet of Fresnel reflectance R.
+    static void lobe_weights(float R, Lobes lobes, float* pr, float* pt) {
         *pr = lobes == Lobes::Transmission ? 0 : R;
         *pt = lobes == Lobes::Reflection ? 0 : 1 - R;
+    }
+    // The values of the header's f_r and f_t at microfacet wm with D(wm), G2, F = F(wo·wm) at hand; ci, co
+    // the cosines of wi and wo, cos_im = wi·wm, cos_om = wo·wm.
+    static float reflected(float d, float g, float F, float ci, float co) {
+        return d * g * F / std::abs(4 * ci * co);
+    }
+    static float transmitted(float d, float g, float F, float cos_im, float cos_om, float etap, float ci,
+                             float co, TransportMode mode) {
+        float denom = sqr(cos_im + cos_om / etap) * ci * co;
+        float ft = d * (1 - F) * g * std::abs(cos_im * cos_om / denom);
+        return mode == TransportMode::Radiance ? ft / (etap * etap) : ft;
     }
 
     MicrofacetDistribution distrib_;
