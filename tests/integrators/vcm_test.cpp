@@ -3,6 +3,7 @@
 // agree with the full estimator and with the path tracer per pixel up to noise; the image does not depend on
 // the thread count; the Cornell box's means match the references. Tolerances are 4.5 standard errors
 // measured over the pixels at fixed seeds (bdpt_test.cpp's convention).
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -148,18 +149,40 @@ TEST(LightVertexGrid, FindsExactlyThePointsWithinTheRadius) {
         else
             pts.push_back(Point3f{u * 2 - 1, v * 3, rng.uniform_float()});
     }
-    for (float r : {0.003f, 0.05f, 0.4f}) {
-        LightVertexGrid grid;
-        grid.build(pts, r);
-        for (int q = 0; q < 300; ++q) {
-            Point3f x{rng.uniform_float() * 2.4f - 1.2f, rng.uniform_float() * 3.2f - 0.1f,
-                      q % 2 ? 0.0f : rng.uniform_float() * 1.2f - 0.1f};
-            if (q % 5 == 0) x = pts[std::size_t(q) * 7];
-            std::vector<int> seen(pts.size(), 0);
-            grid.for_within(x, [&](std::uint32_t i) { ++seen[i]; });
-            for (std::size_t i = 0; i < pts.size(); ++i) {
-                bool within = length_squared(pts[i] - x) <= r * r;
-                ASSERT_EQ(seen[i], within ? 1 : 0) << "r " << r << " query " << q << " point " << i;
+    // Renumbered by cell (number_by_cell), the visits go through `order` to the same points, and a cell's
+    // points are visited in rising number (the data stored in that order is read forwards).
+    for (bool by_cell : {false, true}) {
+        for (float r : {0.003f, 0.05f, 0.4f}) {
+            LightVertexGrid grid;
+            grid.build(pts, r);
+            std::vector<std::uint32_t> order(pts.size());
+            for (std::size_t i = 0; i < pts.size(); ++i) order[i] = std::uint32_t(i);
+            if (by_cell) {
+                grid.number_by_cell(&order);
+                std::vector<std::uint32_t> sorted = order;
+                std::sort(sorted.begin(), sorted.end());
+                for (std::size_t i = 0; i < pts.size(); ++i) ASSERT_EQ(sorted[i], i) << "not a permutation";
+            }
+            for (int q = 0; q < 300; ++q) {
+                Point3f x{rng.uniform_float() * 2.4f - 1.2f, rng.uniform_float() * 3.2f - 0.1f,
+                          q % 2 ? 0.0f : rng.uniform_float() * 1.2f - 0.1f};
+                if (q % 5 == 0) x = pts[std::size_t(q) * 7];
+                std::vector<int> seen(pts.size(), 0);
+                std::vector<std::uint32_t> numbers;
+                grid.for_within(x, [&](std::uint32_t k) {
+                    ++seen[order[k]];
+                    numbers.push_back(k);
+                });
+                // Rising within each of the (at most 8) cells visited: at most 8 rising runs.
+                int runs = numbers.empty() ? 0 : 1;
+                for (std::size_t k = 1; k < numbers.size(); ++k) runs += numbers[k] < numbers[k - 1];
+                if (by_cell) {
+                    ASSERT_LE(runs, 8) << "r " << r << " query " << q;
+                }
+                for (std::size_t i = 0; i < pts.size(); ++i) {
+                    bool within = length_squared(pts[i] - x) <= r * r;
+                    ASSERT_EQ(seen[i], within ? 1 : 0) << "r " << r << " query " << q << " point " << i;
+                }
             }
         }
     }

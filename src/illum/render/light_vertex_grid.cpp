@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "illum/math/rng.h"
-
 namespace illum {
 
 namespace {
@@ -12,17 +10,6 @@ namespace {
 constexpr int kMaxResolution = 1 << 20; // cells per axis, so a cell index fits in 60 bits
 
 } // namespace
-
-std::uint64_t LightVertexGrid::cell_of(Point3f p) const {
-    const float c[3] = {p.x - bounds_.lo.x, p.y - bounds_.lo.y, p.z - bounds_.lo.z};
-    int i[3];
-    for (int a = 0; a < 3; ++a) i[a] = std::clamp(int(c[a] * inv_cell_), 0, res_[a] - 1);
-    return cell_index(i[0], i[1], i[2]);
-}
-
-std::size_t LightVertexGrid::bucket(std::uint64_t cell) const {
-    return std::size_t(mix_bits(cell) & bucket_mask_);
-}
 
 void LightVertexGrid::build(const std::vector<Point3f>& points, float r) {
     r_ = r;
@@ -54,6 +41,14 @@ void LightVertexGrid::build(const std::vector<Point3f>& points, float r) {
         entries_[next[bucket(cell_of(points[i]))]++] = Entry{points[i], std::uint32_t(i)};
     for (std::size_t b = buckets; b > 0; --b) offsets_[b] = offsets_[b - 1];
     offsets_[0] = 0;
+}
+
+void LightVertexGrid::number_by_cell(std::vector<std::uint32_t>* order) {
+    order->resize(entries_.size());
+    for (std::size_t e = 0; e < entries_.size(); ++e) {
+        (*order)[e] = entries_[e].index;
+        entries_[e].index = std::uint32_t(e);
+    }
 }
 
 } // namespace illum

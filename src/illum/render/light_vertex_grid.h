@@ -10,11 +10,13 @@
 // arrays keep their capacity.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "illum/math/bounds.h"
+#include "illum/math/rng.h"
 
 namespace illum {
 
@@ -52,6 +54,11 @@ public:
                 }
     }
 
+    // Renumbers the points in the order of the grid's entries, cell by cell: afterwards visit() receives
+    // the new numbers, and (*order)[k] is the point that now has number k. A caller that arranges its
+    // per-point data by `order` reads it in sequence within a cell instead of at random.
+    void number_by_cell(std::vector<std::uint32_t>* order);
+
     std::size_t size() const { return entries_.size(); }
     // Bytes held by the grid's arrays (capacity).
     std::size_t memory_bytes() const {
@@ -67,8 +74,13 @@ private:
         return (std::uint64_t(z) * std::uint64_t(res_[1]) + std::uint64_t(y)) * std::uint64_t(res_[0]) +
                std::uint64_t(x);
     }
-    std::uint64_t cell_of(Point3f p) const;
-    std::size_t bucket(std::uint64_t cell) const;
+    std::uint64_t cell_of(Point3f p) const {
+        const float c[3] = {p.x - bounds_.lo.x, p.y - bounds_.lo.y, p.z - bounds_.lo.z};
+        int i[3];
+        for (int a = 0; a < 3; ++a) i[a] = std::clamp(int(c[a] * inv_cell_), 0, res_[a] - 1);
+        return cell_index(i[0], i[1], i[2]);
+    }
+    std::size_t bucket(std::uint64_t cell) const { return std::size_t(mix_bits(cell) & bucket_mask_); }
 
     Bounds3f bounds_;
     float r_ = 0, inv_cell_ = 0;

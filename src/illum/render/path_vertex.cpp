@@ -106,8 +106,8 @@ float pdf_light_origin(const PathContext& ctx, const PathVertex& v, const PathVe
     return ctx.scene.light_sampler.pmf(light) * pos.value;
 }
 
-Segment segment(const PathVertex& a, const PathVertex& b) {
-    Vector3f w = b.p - a.p;
+Segment segment(Point3f a, Point3f b) {
+    Vector3f w = b - a;
     float d2 = length_squared(w);
     if (!(d2 > 0)) return {};
     float inv_d2 = 1 / d2;
@@ -116,10 +116,16 @@ Segment segment(const PathVertex& a, const PathVertex& b) {
 
 float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vector3f wn,
                  const PathVertex& next, float inv_d2) {
+    if (v.type == VertexType::Light) return pdf_light(ctx, v, next);
+    return vertex_pdf(ctx, v, wp, wn, density_target(next), inv_d2);
+}
+
+float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vector3f wn,
+                 const DensityTarget& next, float inv_d2) {
     float pdf = 0;
     switch (v.type) {
     case VertexType::Light:
-        return pdf_light(ctx, v, next);
+        return 0; // lights go through pdf_light (above)
     case VertexType::Camera:
         pdf = ctx.scene.camera_pdf_we(Ray{v.p, wn, kInfinity, ctx.time}).dir.value;
         break;
@@ -132,8 +138,8 @@ float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vecto
         break;
     }
     // Per unit area at next (convert_density), with the direction already at hand.
-    if (next.is_infinite_light()) return pdf;
-    if (next.on_surface()) pdf *= std::abs(dot(Vector3f(next.ng), wn));
+    if (next.infinite) return pdf;
+    if (next.ng != Normal3f{}) pdf *= std::abs(dot(Vector3f(next.ng), wn));
     return pdf * inv_d2;
 }
 

@@ -94,7 +94,8 @@ struct Segment {
     Vector3f w;
     float inv_d2 = 0;
 };
-Segment segment(const PathVertex& a, const PathVertex& b);
+Segment segment(Point3f a, Point3f b);
+inline Segment segment(const PathVertex& a, const PathVertex& b) { return segment(a.p, b.p); }
 // 1 / |b - a|², zero when the two coincide (the densities towards a coincident vertex are zero).
 inline float inv_distance_squared(const PathVertex& a, const PathVertex& b) {
     float d2 = length_squared(b.p - a.p);
@@ -109,6 +110,19 @@ float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* 
 // segment once for its two ends (v.wo is already the direction towards v's predecessor in its subpath).
 float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vector3f wn,
                  const PathVertex& next, float inv_d2);
+// What the conversion to area density reads of the vertex a direction leads to: its position, its
+// geometric normal (zero off surfaces) and whether it lies at infinity (an environment or directional
+// light, where the density stays per solid angle). A merge keeps these of a stored light vertex instead of
+// the whole vertex.
+struct DensityTarget {
+    Point3f p;
+    Normal3f ng;
+    bool infinite = false;
+};
+inline DensityTarget density_target(const PathVertex& v) { return {v.p, v.ng, v.is_infinite_light()}; }
+// vertex_pdf towards a target, for a v that is not on a light.
+float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vector3f wn,
+                 const DensityTarget& next, float inv_d2);
 // The reverse densities next to a join of the light subpath ending in qs (after qs_m) with the camera
 // subpath ending in pt (after pt_m), as they are in the joined path (Veach eq. 10.9; the join's ends are
 // not delta): pt's from qs, pt_m's through pt from qs, qs's from pt, qs_m's through qs from pt. qs null:

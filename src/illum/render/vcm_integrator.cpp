@@ -49,6 +49,42 @@ struct LightChunk {
     int dropped = 0;
 };
 
+// What a merge reads of a stored light vertex y_j (j >= 1) and of its predecessors, packed into 80 bytes in
+// the grid's cell order, so that a candidate found in the grid costs one or two cache lines instead of
+// the several 440-byte StoredVertex records (y_j, y_{j-1}, y_{j-2}, the light vertex) it would touch.
+struct MergeVertex {
+    SampledSpectrum beta;     // y_j's throughput
+    Vector3f wo;              // unit direction from y_j towards y_{j-1}
+    float pdf_fwd = 0;        // y_j's own density
+    DensityTarget prev;       // y_{j-1}, where the camera vertex's reverse density is converted
+    MisVertex prev_mis;       // y_{j-1}'s weights' densities
+    float prev2_tail = 0;     // y_{j-2}'s subpath_tails (j >= 2)
+    bool prev2_delta = false; // y_{j-2} was scattered specularly (j >= 2)
+    bool light_delta = false; // y_0 is a delta light
+    bool terminated = false;  // StoredVertex::terminated
+    std::uint8_t j = 0;
+};
+
+static_assert(sizeof(MergeVertex) <= 80);
+
+MergeVertex merge_vertex(const StoredVertex& y) {
+    const StoredVertex& prev = (&y)[-1];
+    MergeVertex m;
+    m.beta = y.v.beta;
+    m.wo = y.v.wo;
+    m.pdf_fwd = y.v.pdf_fwd;
+    m.prev = density_target(prev.v);
+    m.prev_mis = prev.mis;
+    if (y.index >= 2) {
+        m.prev2_tail = (&y)[-2].tail;
+        m.prev2_delta = (&y)[-2].mis.delta;
+    }
+    m.light_delta = (&y - y.index)->v.is_delta_light();
+    m.terminated = y.terminated;
+    m.j = std::uint8_t(y.index);
+    return m;
+}
+
 MisVertex mis_of(const PathVertex& v) {
     MisVertex m;
     m.fwd = v.pdf_fwd;
@@ -168,7 +204,9 @@ private:
     float radius_ = 0;
     std::vector<LightChunk> light_chunks_;
     std::vector<Point3f> grid_p_;
-    std::vector<const StoredVertex*> grid_v_;
+    std::vector<const StoredVertex*> grid_sv_; // the mergeable vertices, in the chunks' order
+    std::vector<std::uint32_t> grid_order_;    // LightVertexGrid::number_by_cell
+    std::vector<MergeVertex> grid_v_;          // what merges read of them, in the grid's cell order
     LightVertexGrid grid_;
 
     std::unique_ptr<tbb::enumerable_thread_specific<ThreadContext>> contexts_;
@@ -287,17 +325,22 @@ void VcmRender::light_pass(int sample_index, tbb::task_arena& arena) {
 // (b) The grid of the mergeable light vertices y_j, j >= 1 (the light subpaths hold up to maxdepth + 1).
 void VcmRender::build_grid() {
     grid_p_.clear();
-    grid_v_.clear();
+    grid_sv_.clear();
     if (techniques_.vm)
         for (const LightChunk& c : light_chunks_)
             for (const StoredVertex& sv : c.vertices)
                 if (sv.index >= 1 && sv.mis.mergeable()) {
                     grid_p_.push_back(sv.v.p);
-                    grid_v_.push_back(&sv);
+                    grid_sv_.push_back(&sv);
                 }
     grid_.build(grid_p_, radius_);
+    grid_.number_by_cell(&grid_order_);
+    grid_v_.resize(grid_order_.size());
+    for (std::size_t k = 0; k < grid_order_.size(); ++k) grid_v_[k] = merge_vertex(*grid_sv_[grid_order_[k]]);
     grid_bytes_ = std::max(grid_bytes_, grid_.memory_bytes() + grid_p_.capacity() * sizeof(Point3f) +
-                                            grid_v_.capacity() * sizeof(const StoredVertex*));
+                                            grid_sv_.capacity() * sizeof(const StoredVertex*) +
+                                            grid_order_.capacity() * sizeof(std::uint32_t) +
+                                            grid_v_.capacity() * sizeof(MergeVertex));
 }
 
 // VC strategy (s, t >= 2) between the camera subpath and its paired light subpath (sc.light): its
@@ -374,33 +417,44 @@ SampledSpectrum VcmRender::merge(const PathContext& ctx, Scratch& sc, int t, Sam
     const float p_cam_z = z.pdf_fwd;
     SampledSpectrum sum_l(0.0f), sum_l_terminated(0.0f);
     *terminated = SampledSpectrum(0.0f);
+    // cv[t-2], the vertex z was entered from: the same for every y.
+    const Segment to_pred = segment(z.p, cv[t - 2].p);
     grid_.for_within(z.p, [&](std::uint32_t gi) {
-        const StoredVertex& y = *grid_v_[gi];
-        const int j = int(y.index);
+        const MergeVertex& y = grid_v_[gi];
+        const int j = int(y.j);
         if (j > j_max) return;
         ++*merges;
-        SampledSpectrum f = z.bsdf.f(z.wo, y.v.wo, TransportMode::Radiance).s;
+        SampledSpectrum f = z.bsdf.f(z.wo, y.wo, TransportMode::Radiance).s;
         if (f.is_black()) return;
-        const StoredVertex* base = &y - j; // y's subpath, from its light vertex
-        // The light side: y_0..y_{j-1} as stored, y_j = z reached from y_{j-1}.
+        // The light side: y_0..y_{j-1} as stored, y_j = z reached from y_{j-1}. technique_sum reads
+        // ml[j], ml[j-1] and ml[j-2]'s delta; the terms beyond come from y_{j-2}'s tail.
         MisVertex* ml = sc.tmp_l.data();
-        for (int i = 0; i < j; ++i) ml[i] = base[i].mis;
-        ml[j - 1].rev = vertex_pdf(ctx, z, &cv[t - 2], base[j - 1].v);
-        ml[j].fwd = y.v.pdf_fwd;
+        const Segment to_prev = segment(z.p, y.prev.p); // z towards y_{j-1}
+        if (j >= 2) {
+            ml[j - 2] = MisVertex{};
+            ml[j - 2].delta = y.prev2_delta;
+            sc.mtail[std::size_t(j - 2)] = y.prev2_tail;
+        }
+        ml[j - 1] = y.prev_mis;
+        ml[j - 1].rev = to_prev.inv_d2 > 0 && to_pred.inv_d2 > 0
+                            ? vertex_pdf(ctx, z, to_pred.w, to_prev.w, y.prev, to_prev.inv_d2)
+                            : 0.0f;
+        ml[j].fwd = y.pdf_fwd;
         ml[j].rev = p_cam_z;
         ml[j].delta = false;
         ml[j].nonspecular = true;
         MisVertex saved = mc[t - 2];
-        mc[t - 2].rev = vertex_pdf(ctx, z, &base[j - 1].v, cv[t - 2]);
-        if (j >= 2) sc.mtail[std::size_t(j - 2)] = base[j - 2].tail;
-        float sum = technique_sum(ml, j + 1, mc, t - 1, base[0].v.is_delta_light(), techniques_,
-                                  sc.mtail.data(), sc.ctail.data());
+        mc[t - 2].rev = to_prev.inv_d2 > 0 && to_pred.inv_d2 > 0
+                            ? vertex_pdf(ctx, z, to_prev.w, to_pred.w, cv[t - 2], to_pred.inv_d2)
+                            : 0.0f;
+        float sum =
+            technique_sum(ml, j + 1, mc, t - 1, y.light_delta, techniques_, sc.mtail.data(), sc.ctail.data());
         mc[t - 2] = saved;
         // p←(y_j) is a delta (0, remapped to 1) after a specular camera vertex, as in the sum.
         float w =
             sum > 0 ? pow_beta((p_cam_z != 0 ? p_cam_z : 1.0f) * techniques_.eta_vcm, techniques_.power) / sum
                     : 0.0f;
-        SampledSpectrum c = z.beta * f * y.v.beta * (w * kernel);
+        SampledSpectrum c = z.beta * f * y.beta * (w * kernel);
         if (!c.is_finite() || c.has_negative()) {
             ++*dropped;
             return;
