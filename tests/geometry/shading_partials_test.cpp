@@ -41,8 +41,8 @@ TEST(ShadingPartials, TriangleSolvesTheUvParameterisation) {
     m.uv = {{0.5f, 0.5f}, {0.5f, 0.5f}, {0.5f, 0.5f}};
     s = m.shading_partials(0, {0.2f, 0.5f, 0});
     EXPECT_NEAR(length(s.dpdu), 1, 1e-5f);
-    EXPECT_NEAR(dot(s.dpdu, Vector3f(m.face_normals[0])), 0, 1e-5f);
-    EXPECT_NEAR(dot(s.dpdv, Vector3f(m.face_normals[0])), 0, 1e-5f);
+    EXPECT_NEAR(dot(s.dpdu, Vector3f(m.geometric_normal(0))), 0, 1e-5f);
+    EXPECT_NEAR(dot(s.dpdv, Vector3f(m.geometric_normal(0))), 0, 1e-5f);
 }
 
 TEST(ShadingPartials, TriangleWithNormalsFollowsTheShadingNormal) {

@@ -429,7 +429,7 @@ void Accelerator::curve_alpha_filter(const RTCFilterFunctionNArguments* args) {
 std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
                                     std::vector<const Light*> lights, const FloatTexture* alpha,
                                     const MediumInterface* medium_interface) {
-    if (mesh->face_normals.size() != mesh->triangle_count()) mesh->finalize();
+    if (!mesh->finalized()) mesh->finalize();
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                           3 * sizeof(float), mesh->p.size()));

@@ -19,7 +19,7 @@ void TriangleMesh::transform(const Transform& world_from_object) {
 }
 
 void TriangleMesh::finalize() {
-    face_normals.resize(triangle_count());
+    hit_triangles_.resize(triangle_count());
     for (std::size_t tri = 0; tri < triangle_count(); ++tri) {
         auto v = vertices(tri);
         Vector3f c = cross(v[0] - v[2], v[1] - v[2]);
@@ -33,31 +33,36 @@ void TriangleMesh::finalize() {
         } else if (flip_normal) {
             ng = -ng;
         }
-        face_normals[tri] = ng;
+        hit_triangles_[tri] = {
+            {indices[3 * tri], indices[3 * tri + 1], indices[3 * tri + 2]}, ng, face_index(tri)};
     }
+    hit_vertices_.resize(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i)
+        hit_vertices_[i] = {p[i], n.empty() ? Normal3f{} : n[i], uv.empty() ? Point2f{} : uv[i]};
 }
 
 void TriangleMesh::fill_hit(std::uint32_t tri, float b1, float b2, float t, const Ray& ray,
                             SurfaceHit* hit) const {
     float b0 = 1 - b1 - b2;
-    std::uint32_t i0 = indices[3 * tri], i1 = indices[3 * tri + 1], i2 = indices[3 * tri + 2];
-    Point3f p0 = p[i0], p1 = p[i1], p2 = p[i2];
+    const HitTriangle& tr = hit_triangles_[tri];
+    const HitVertex &v0 = hit_vertices_[tr.v[0]], &v1 = hit_vertices_[tr.v[1]], &v2 = hit_vertices_[tr.v[2]];
+    Point3f p0 = v0.p, p1 = v1.p, p2 = v2.p;
     hit->p = barycentric(p0, p1, p2, b0, b1, b2);
     // Error of the barycentric interpolation: γ_7 Σ |b_i p_i| (PBR 4th ed., §6.8.5).
     hit->p_error =
         (abs(Vector3f(p0) * b0) + abs(Vector3f(p1) * b1) + abs(Vector3f(p2) * b2)) * gamma_bound(7);
     hit->t = t;
     hit->wo = normalize(-ray.d);
-    hit->n = face_normals[tri];
+    hit->n = tr.n;
 
     Point2f uv0{0, 0}, uv1{1, 0}, uv2{1, 1};
     if (!uv.empty()) {
-        uv0 = uv[i0];
-        uv1 = uv[i1];
-        uv2 = uv[i2];
+        uv0 = v0.uv;
+        uv1 = v1.uv;
+        uv2 = v2.uv;
     }
     hit->uv = {b0 * uv0.x + b1 * uv1.x + b2 * uv2.x, b0 * uv0.y + b1 * uv1.y + b2 * uv2.y};
-    hit->face_index = face_index(tri);
+    hit->face_index = tr.face_index;
     // dp/du from the uv parameterisation; a fallback frame when it is degenerate.
     Vector2f duv02 = uv0 - uv2, duv12 = uv1 - uv2;
     Vector3f dp02 = p0 - p2, dp12 = p1 - p2;
@@ -69,7 +74,7 @@ void TriangleMesh::fill_hit(std::uint32_t tri, float b1, float b2, float t, cons
     }
     hit->dpdu = dpdu;
     if (!n.empty()) {
-        Normal3f ns = n[i0] * b0 + n[i1] * b1 + n[i2] * b2;
+        Normal3f ns = v0.n * b0 + v1.n * b1 + v2.n * b2;
         float len2 = dot(ns, ns);
         hit->ns = len2 > 0 ? ns * (1 / std::sqrt(len2)) : hit->n;
     } else {
@@ -102,7 +107,7 @@ ShadingPartials TriangleMesh::shading_partials(std::uint32_t tri, Point3f local)
         s.dpdv = (dp12 * duv02.x - dp02 * duv12.x) * inv;
         degenerate = !is_finite(s.dpdu) || !is_finite(s.dpdv) || length_squared(cross(s.dpdu, s.dpdv)) == 0;
     }
-    if (degenerate) coordinate_system(Vector3f(face_normals[tri]), &s.dpdu, &s.dpdv);
+    if (degenerate) coordinate_system(Vector3f(geometric_normal(tri)), &s.dpdu, &s.dpdv);
     s.geometric_dpdu = s.dpdu, s.geometric_dpdv = s.dpdv;
     if (n.empty()) return s; // ∂n/∂u = ∂n/∂v = 0
 
@@ -110,7 +115,7 @@ ShadingPartials TriangleMesh::shading_partials(std::uint32_t tri, Point3f local)
     // ∂n/∂u, ∂n/∂v from the normals as ∂p/∂u, ∂p/∂v from the points.
     Normal3f ns = n[i0] * b0 + n[i1] * b1 + n[i2] * b2;
     float len2 = dot(ns, ns);
-    Vector3f z = len2 > 0 ? Vector3f(ns) * (1 / std::sqrt(len2)) : Vector3f(face_normals[tri]);
+    Vector3f z = len2 > 0 ? Vector3f(ns) * (1 / std::sqrt(len2)) : Vector3f(geometric_normal(tri));
     Vector3f ts = cross(z, s.dpdu);
     if (length_squared(ts) > 0) {
         s.dpdu = cross(ts, z);
