@@ -430,23 +430,21 @@ SampledSpectrum VcmRender::merge(const PathContext& ctx, Scratch& sc, int t, Sam
         // ml[j], ml[j-1] and ml[j-2]'s delta; the terms beyond come from y_{j-2}'s tail.
         MisVertex* ml = sc.tmp_l.data();
         const Segment to_prev = segment(z.p, y.prev.p); // z towards y_{j-1}
+        // Both densities below are 0 where z coincides with either neighbour (vertex_pdf's rule).
+        const bool apart = to_prev.inv_d2 > 0 && to_pred.inv_d2 > 0;
         if (j >= 2) {
             ml[j - 2] = MisVertex{};
             ml[j - 2].delta = y.prev2_delta;
             sc.mtail[std::size_t(j - 2)] = y.prev2_tail;
         }
         ml[j - 1] = y.prev_mis;
-        ml[j - 1].rev = to_prev.inv_d2 > 0 && to_pred.inv_d2 > 0
-                            ? vertex_pdf(ctx, z, to_pred.w, to_prev.w, y.prev, to_prev.inv_d2)
-                            : 0.0f;
+        ml[j - 1].rev = apart ? vertex_pdf(ctx, z, to_pred.w, to_prev.w, y.prev, to_prev.inv_d2) : 0.0f;
         ml[j].fwd = y.pdf_fwd;
         ml[j].rev = p_cam_z;
         ml[j].delta = false;
         ml[j].nonspecular = true;
         MisVertex saved = mc[t - 2];
-        mc[t - 2].rev = to_prev.inv_d2 > 0 && to_pred.inv_d2 > 0
-                            ? vertex_pdf(ctx, z, to_prev.w, to_pred.w, cv[t - 2], to_pred.inv_d2)
-                            : 0.0f;
+        mc[t - 2].rev = apart ? vertex_pdf(ctx, z, to_prev.w, to_pred.w, cv[t - 2], to_pred.inv_d2) : 0.0f;
         float sum =
             technique_sum(ml, j + 1, mc, t - 1, y.light_delta, techniques_, sc.mtail.data(), sc.ctail.data());
         mc[t - 2] = saved;
