@@ -601,6 +601,17 @@ void Accelerator::commit() {
             rtcEnableGeometry(g); // (disabled by an earlier commit with fewer shapes)
     }
     if (direct) direct_shapes_ = std::move(analytic);
+    // Packets: no callback that takes single rays only, in the world (less the direct shapes, which Embree
+    // no longer traverses) or in any prototype.
+    auto single_ray_only = [](const Record& r, bool direct_shape) {
+        return r.cutout || r.kind == Kind::Patches || (r.kind == Kind::Analytic && !direct_shape);
+    };
+    packets_supported_ = true;
+    for (const Record& r : records_)
+        if (single_ray_only(r, direct)) packets_supported_ = false;
+    for (const auto& p : prototypes_)
+        for (const Record& r : p->records)
+            if (single_ray_only(r, false)) packets_supported_ = false;
     rtcCommitScene(scene_);
 }
 
@@ -651,6 +662,41 @@ bool Accelerator::find(const Ray& ray, Found* found) const {
     rtcIntersect1(scene_, &ctx, &rh);
     intersect_direct(rh);
     return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+}
+
+std::uint32_t Accelerator::find_packet(const Ray* rays, int n, Found* found) const {
+    alignas(32) int valid[kPacket] = {};
+    alignas(32) RTCRayHit8 p{};
+    for (int i = 0; i < n; ++i) {
+        const RTCRay r = to_embree(rays[i], embree_time(rays[i].time));
+        found[i].rh.ray = r;
+        valid[i] = traceable(r) ? -1 : 0;
+        p.ray.org_x[i] = r.org_x, p.ray.org_y[i] = r.org_y, p.ray.org_z[i] = r.org_z;
+        p.ray.dir_x[i] = r.dir_x, p.ray.dir_y[i] = r.dir_y, p.ray.dir_z[i] = r.dir_z;
+        p.ray.tnear[i] = r.tnear, p.ray.tfar[i] = r.tfar, p.ray.time[i] = r.time;
+        p.ray.mask[i] = r.mask, p.ray.id[i] = r.id, p.ray.flags[i] = r.flags;
+    }
+    for (int i = 0; i < kPacket; ++i) {
+        p.hit.geomID[i] = p.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
+        p.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect8(valid, scene_, &ctx, &p);
+    std::uint32_t found_bits = 0;
+    for (int i = 0; i < n; ++i) {
+        RTCRayHit& rh = found[i].rh;
+        rh.ray.tfar = p.ray.tfar[i];
+        rh.hit.Ng_x = p.hit.Ng_x[i], rh.hit.Ng_y = p.hit.Ng_y[i], rh.hit.Ng_z = p.hit.Ng_z[i];
+        rh.hit.u = p.hit.u[i], rh.hit.v = p.hit.v[i];
+        rh.hit.primID = p.hit.primID[i], rh.hit.geomID = p.hit.geomID[i];
+        rh.hit.instID[0] = p.hit.instID[0][i];
+        if (!valid[i]) continue; // find() returns false for an untraceable ray
+        intersect_direct(rh);
+        if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) found_bits |= 1u << i;
+    }
+    return found_bits;
 }
 
 bool Accelerator::complete(const Found& found, const Ray& ray, SurfaceHit* hit) const {

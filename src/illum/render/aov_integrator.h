@@ -15,6 +15,7 @@ public:
     Radiance3 estimate(const Ray& camera_ray, ThreadContext& tc) const override {
         return film_value(value(camera_ray, tc));
     }
+    bool starts_at_camera_hit() const override { return true; }
     // The pass's value at the first surface along the ray (zero where there is none).
     Color3 value(const Ray& camera_ray, ThreadContext& tc) const {
         Ray ray = camera_ray;

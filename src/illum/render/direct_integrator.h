@@ -16,6 +16,7 @@ public:
         return radiance(camera_ray, tc);
     }
     Radiance3 radiance(Ray ray, ThreadContext& tc) const;
+    bool starts_at_camera_hit() const override { return true; }
 
 private:
     Radiance3 reflected_from(const Light& light, const SurfaceHit& hit, const BSDF& bsdf,

@@ -28,6 +28,18 @@ struct ThreadContext {
     // render loop; render/texture_footprint.h).
     RayDifferentials camera_differentials;
     std::uint64_t rays = 0; // rays traced (closest hit and shadow)
+    // The current camera ray's closest hit when the render loop traced it in a packet with the pixel's
+    // other samples (Accelerator::find_packet): the integrator's first find() or intersect() of that very
+    // ray takes it instead of tracing the ray again.
+    struct PrimedHit {
+        bool pending = false;
+        bool hit = false;
+        Ray ray;
+        Accelerator::Found found;
+        bool is_for(const Ray& r) const {
+            return r.o == ray.o && r.d == ray.d && r.tmax == ray.tmax && r.time == ray.time;
+        }
+    } primed;
 
     explicit ThreadContext(const Sampler& s) : sampler(s) {}
 };
@@ -42,17 +54,30 @@ public:
     // Whether estimates may be negative (a signed debug pass); radiance never is, so a negative radiance
     // estimate is a numerical failure that the render loop drops and counts.
     virtual bool signed_values() const { return false; }
+    // Whether the estimate's first query is the camera ray's closest hit (find() or intersect() of the ray
+    // estimate() is given), so that the render loop may trace the camera rays of a pixel's samples as one
+    // packet and hand each its hit (ThreadContext::primed).
+    virtual bool starts_at_camera_hit() const { return false; }
     // Whether the estimate is radiance, which spectral mode computes at sampled wavelengths; a debug pass's
     // value is RGB in either mode.
     virtual bool radiometric() const { return true; }
 
 protected:
     bool intersect(const Ray& ray, SurfaceHit* hit, ThreadContext& tc) const {
+        if (tc.primed.pending) [[unlikely]] {
+            Accelerator::Found found;
+            return find(ray, &found, tc) && scene_.accelerator.complete(found, ray, hit);
+        }
         ++tc.rays;
         return scene_.intersect(ray, hit);
     }
     bool find(const Ray& ray, Accelerator::Found* found, ThreadContext& tc) const {
         ++tc.rays;
+        if (tc.primed.pending && tc.primed.is_for(ray)) [[unlikely]] {
+            tc.primed.pending = false;
+            *found = tc.primed.found;
+            return tc.primed.hit;
+        }
         return scene_.find(ray, found);
     }
     bool occluded(const Ray& ray, ThreadContext& tc) const {

@@ -16,6 +16,7 @@ public:
         return radiance(camera_ray, tc);
     }
     Radiance3 radiance(Ray ray, ThreadContext& tc) const;
+    bool starts_at_camera_hit() const override { return true; }
 
 private:
     int max_depth_;

@@ -127,56 +127,124 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     Progress progress("render", timed ? 0 : pixels * std::uint64_t(share.count(options.spp)), "samples",
                       options.quiet);
 
+    // A pixel sample up to its camera ray: the filter's sample, the wavelengths, the ray (and its
+    // differentials, in tc) at the sample's time.
+    struct CameraSample {
+        FilterSample fs;
+        std::optional<CameraRay> cr;
+        SampledWavelengths lambda;
+        RayDifferentials rd;
+        Sampler::Position position;
+    };
+    auto start_sample = [&](ThreadContext& tc, int x, int y, int index, CameraSample* s) {
+        tc.sampler.start_pixel_sample({x, y}, index);
+        s->fs = scene.pixel_filter_sample(tc.sampler.get_pixel_2d());
+        Point2f p_film{x + 0.5f + s->fs.offset.x, y + 0.5f + s->fs.offset.y};
+        Point2f u_lens{0.5f, 0.5f};
+        if (uses_lens)
+            u_lens = tc.sampler.get_2d();
+        else
+            tc.sampler.skip_2d();
+        tc.lambda = spectral ? SampledWavelengths::sample_visible(
+                                   scene.wavelength_sample(tc.sampler.get_1d()), scene.color_space)
+                             : SampledWavelengths::rgb_mode();
+        // RGB mode: the camera sees the d line. A dispersive lens sends each wavelength its own way: the
+        // path keeps the hero only. A vignetted sample adds zero radiance but still counts (its filter
+        // weight goes to the pixel).
+        if (dispersive_camera) tc.lambda.terminate_secondary();
+        const float lambda_cam = spectral ? tc.lambda.hero() : kDLineNm;
+        if (scene.texture_filtering) [[unlikely]]
+            s->cr = camera_ray_differential(scene, p_film, u_lens, lambda_cam, diff_scale,
+                                            &tc.camera_differentials);
+        else
+            s->cr = scene.camera->generate_ray(p_film, u_lens, lambda_cam);
+        // Motion blur: the sample's time, shared by every ray of its path.
+        if (s->cr && scene.has_motion) {
+            float time = scene.sample_time(tc.sampler.get_1d());
+            s->cr->ray = scene.camera_ray_at(s->cr->ray, time);
+            if (tc.camera_differentials.valid) move_differentials(scene, time, &tc.camera_differentials);
+        }
+    };
+    // The rest of the sample: the integrator's estimate along the camera ray, added to the film.
+    auto finish_sample = [&](ThreadContext& tc, int x, int y, const CameraSample& s) {
+        Radiance3 v(0.0f);
+        if (s.cr) v = integrator.estimate(s.cr->ray, tc) * s.cr->weight;
+        tc.primed.pending = false;
+        tc.arena.reset();
+        if (!v.is_finite() || (reject_negative && v.has_negative())) {
+            ++nonfinite;
+            v = Radiance3(0.0f);
+        }
+        Color3 c = radiometric ? scene.sensor.to_film(v, tc.lambda) : v.rgb();
+        film.add_sample(x, y, c, s.fs.weight);
+    };
+    // Camera rays in packets: the samples of a tile's row (pixel by pixel, each pixel's samples in turn, the
+    // order they reach the film in) are started up to kPacket at a time, their camera rays traced together
+    // (the samples of a pixel, or neighbouring pixels, are coherent), and each sample resumed with its hit.
+    // The same samples in the same order: the image is the one sample-by-sample tracing gives.
+    constexpr int kPacket = Accelerator::kPacket;
+    const bool packets = options.camera_packets && integrator.starts_at_camera_hit() &&
+                         scene.accelerator.packets_supported() && prototype.resumable();
+
     // Renders this share's samples k0..k1-1 (global indices share.index(k)) of every pixel.
     auto pass = [&](int k0, int k1) {
         arena.execute([&] {
             tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1), [&](const auto& range) {
                 ThreadContext& tc = contexts.local();
+                CameraSample batch[kPacket];
+                Ray rays[kPacket];
+                Accelerator::Found found[kPacket];
+                int ray_sample[kPacket];
+                const int nk = k1 - k0;
                 for (std::size_t ti = range.begin(); ti != range.end(); ++ti) {
                     const Tile& t = tiles[ti];
-                    for (int y = t.y0; y < t.y1; ++y)
-                        for (int x = t.x0; x < t.x1; ++x)
-                            for (int k = k0; k < k1; ++k) {
-                                tc.sampler.start_pixel_sample({x, y}, share.index(k));
-                                FilterSample fs = scene.pixel_filter_sample(tc.sampler.get_pixel_2d());
-                                Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
-                                Point2f u_lens{0.5f, 0.5f};
-                                if (uses_lens)
-                                    u_lens = tc.sampler.get_2d();
-                                else
-                                    tc.sampler.skip_2d();
-                                tc.lambda = spectral ? SampledWavelengths::sample_visible(
-                                                           scene.wavelength_sample(tc.sampler.get_1d()),
-                                                           scene.color_space)
-                                                     : SampledWavelengths::rgb_mode();
-                                // RGB mode: the camera sees the d line. A dispersive lens sends each
-                                // wavelength its own way: the path keeps the hero only. A vignetted sample
-                                // adds zero radiance but still counts (its filter weight goes to the pixel).
-                                if (dispersive_camera) tc.lambda.terminate_secondary();
-                                const float lambda_cam = spectral ? tc.lambda.hero() : kDLineNm;
-                                std::optional<CameraRay> cr;
-                                if (scene.texture_filtering) [[unlikely]]
-                                    cr = camera_ray_differential(scene, p_film, u_lens, lambda_cam,
-                                                                 diff_scale, &tc.camera_differentials);
-                                else
-                                    cr = scene.camera->generate_ray(p_film, u_lens, lambda_cam);
-                                // Motion blur: the sample's time, shared by every ray of its path.
-                                if (cr && scene.has_motion) {
-                                    float time = scene.sample_time(tc.sampler.get_1d());
-                                    cr->ray = scene.camera_ray_at(cr->ray, time);
-                                    if (tc.camera_differentials.valid)
-                                        move_differentials(scene, time, &tc.camera_differentials);
+                    const int row = (t.x1 - t.x0) * nk; // samples in a row of the tile
+                    for (int y = t.y0; y < t.y1; ++y) {
+                        if (!packets) {
+                            for (int x = t.x0; x < t.x1; ++x)
+                                for (int k = k0; k < k1; ++k) {
+                                    start_sample(tc, x, y, share.index(k), &batch[0]);
+                                    finish_sample(tc, x, y, batch[0]);
                                 }
-                                Radiance3 v(0.0f);
-                                if (cr) v = integrator.estimate(cr->ray, tc) * cr->weight;
-                                tc.arena.reset();
-                                if (!v.is_finite() || (reject_negative && v.has_negative())) {
-                                    ++nonfinite;
-                                    v = Radiance3(0.0f);
+                            continue;
+                        }
+                        for (int i0 = 0; i0 < row; i0 += kPacket) {
+                            const int n = std::min(kPacket, row - i0);
+                            int n_rays = 0;
+                            for (int j = 0; j < n; ++j) {
+                                CameraSample& s = batch[j];
+                                const int i = i0 + j;
+                                start_sample(tc, t.x0 + i / nk, y, share.index(k0 + i % nk), &s);
+                                s.lambda = tc.lambda;
+                                s.rd = tc.camera_differentials;
+                                s.position = tc.sampler.position();
+                                if (s.cr) {
+                                    ray_sample[n_rays] = j;
+                                    rays[n_rays++] = s.cr->ray;
                                 }
-                                Color3 c = radiometric ? scene.sensor.to_film(v, tc.lambda) : v.rgb();
-                                film.add_sample(x, y, c, fs.weight);
                             }
+                            // A lone ray goes the integrator's own way.
+                            const std::uint32_t hits =
+                                n_rays > 1 ? scene.accelerator.find_packet(rays, n_rays, found) : 0;
+                            for (int j = 0, r = 0; j < n; ++j) {
+                                const CameraSample& s = batch[j];
+                                tc.sampler.resume(s.position);
+                                tc.lambda = s.lambda;
+                                tc.camera_differentials = s.rd;
+                                if (r < n_rays && ray_sample[r] == j) {
+                                    if (n_rays > 1) {
+                                        tc.primed.pending = true;
+                                        tc.primed.hit = (hits >> r) & 1u;
+                                        tc.primed.ray = rays[r];
+                                        tc.primed.found = found[r];
+                                    }
+                                    ++r;
+                                }
+                                const int i = i0 + j;
+                                finish_sample(tc, t.x0 + i / nk, y, s);
+                            }
+                        }
+                    }
                     progress.add(std::uint64_t(t.x1 - t.x0) * (t.y1 - t.y0) * (k1 - k0));
                 }
             });

@@ -33,6 +33,9 @@ struct RenderOptions {
     RenderGroup* group = nullptr;
     // A live preview (render_preview.h): passes of one sample per pixel, each handed over when done.
     RenderPreview* preview = nullptr;
+    // The camera rays of neighbouring samples traced as one Embree packet where the scene and integrator
+    // allow it (renderer.cpp); the image is the same either way (tests compare the two).
+    bool camera_packets = true;
 };
 
 struct RenderResult {

@@ -164,6 +164,25 @@ public:
             (void)get_2d();
     }
 
+    // Where a pixel sample has got to, for resuming it later: the render loop starts the samples of a
+    // camera-ray packet one after another and continues each once the packet is traced. Only the kinds
+    // whose whole per-sample state is this (resumable()); the others keep caches of their pixel.
+    struct Position {
+        uint32_t index, dimension, reversed_index;
+        uint64_t pixel_hash;
+        PCG32 rng, pixel_rng;
+    };
+    bool resumable() const { return kind_ == SamplerKind::sobol || kind_ == SamplerKind::independent; }
+    Position position() const { return {index_, dimension_, reversed_index_, pixel_hash_, rng_, pixel_rng_}; }
+    void resume(const Position& p) {
+        index_ = p.index;
+        dimension_ = p.dimension;
+        reversed_index_ = p.reversed_index;
+        pixel_hash_ = p.pixel_hash;
+        rng_ = p.rng;
+        pixel_rng_ = p.pixel_rng;
+    }
+
     Point2f get_pixel_2d() {
         if (kind_ == SamplerKind::independent) {
             PCG32 r = pixel_rng_;

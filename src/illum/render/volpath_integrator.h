@@ -40,6 +40,7 @@ public:
         entry_media_ = has_entry_media(scene);
     }
     Radiance3 estimate(const Ray& camera_ray, ThreadContext& tc) const override;
+    bool starts_at_camera_hit() const override { return true; }
 
     // Next-event estimation's light for ctx and its probability: the scene's light sampler at a surface
     // point; by power at a point in a medium (ctx.n zero), where the equiangular sampling of a segment picks
