@@ -1,8 +1,10 @@
 // Camera rays in Embree packets (Accelerator::find_packet, the render loop's batches): a packet finds
-// exactly what the rays find one by one; scenes with callbacks that take single rays only do not use
-// packets; and the render loop gives the same image, bit for bit, with and without them, for every
-// integrator that takes the packet's hits, both resumable samplers, whole and partial packets, a
-// texture-filtered scene (each sample's ray differentials) and a moving camera (each ray's time).
+// exactly what the rays find one by one, also where Embree calls illum's callbacks with the packet (analytic
+// shapes and bilinear patches as user geometry, alpha cut-outs, in instances too), and scenes with curves
+// (whose packet hits Embree rounds otherwise) do not use packets; and the render loop gives the same image,
+// bit for bit, with and without packets, for every integrator that takes the packet's hits, both resumable
+// samplers, whole and partial packets, a texture-filtered scene (each sample's ray differentials) and a
+// moving camera (each ray's time).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,26 +71,62 @@ void expect_same(const Accelerator::Found& a, const Accelerator::Found& b) {
     EXPECT_EQ(x.hit.Ng_z, y.hit.Ng_z);
 }
 
-TEST(CameraPackets, APacketFindsWhatEachRayFindsAlone) {
-    auto scene = build(kBox);
-    const Accelerator& acc = scene->accelerator;
-    ASSERT_TRUE(acc.packets_supported());
+// The same box with geometry whose hits Embree's callbacks decide: three spheres (more than the two tested
+// outside Embree), a disk and a cylinder, a bilinear patch, a mesh and a sphere with alpha cut-outs, and a
+// sphere and a patch inside an object instance.
+std::string with_callbacks() {
+    std::string text = kBox;
+    text += R"(
+Shape "sphere" "float radius" 0.15
+AttributeBegin
+Translate -0.4 0.4 0.3
+Shape "sphere" "float radius" 0.2 "float alpha" 0.5
+Shape "disk" "float radius" 0.3
+AttributeEnd
+AttributeBegin
+Translate 0.5 0.5 0.6
+Rotate 70 1 0 0
+Shape "cylinder" "float radius" 0.1 "float zmin" -0.2 "float zmax" 0.2
+AttributeEnd
+Shape "bilinearmesh" "point3 P" [-0.9 -0.9 0.9  0.2 -0.9 0.7  -0.9 0.2 0.8  0.2 0.2 0.5]
+    "integer indices" [0 1 2 3]
+Shape "trianglemesh" "float alpha" 0.4 "integer indices" [0 1 2  0 2 3]
+    "point3 P" [-0.6 -0.6 0  0.6 -0.6 0  0.6 0.6 0  -0.6 0.6 0]
+ObjectBegin "round"
+Shape "sphere" "float radius" 0.1
+Shape "bilinearmesh" "point3 P" [0 0 0  0.2 0 0  0 0.2 0.05  0.2 0.2 0] "integer indices" [0 1 2 3]
+ObjectEnd
+AttributeBegin
+Translate 0.2 0.6 -0.2
+ObjectInstance "round"
+AttributeEnd
+)";
+    return text;
+}
+
+// find_packet against find for coherent pencils of rays (even rounds) and incoherent rays (odd rounds),
+// with every packet size and an untraceable ray now and then. Returns the hits by kind of record.
+struct HitCounts {
+    int hits = 0, instance_hits = 0, shape_hits = 0;
+};
+HitCounts expect_packets_match(const Accelerator& acc, int rounds) {
     PCG32 rng;
-    int hits = 0, instance_hits = 0, sphere_hits = 0;
-    for (int round = 0; round < 400; ++round) {
+    HitCounts counts;
+    for (int round = 0; round < rounds; ++round) {
         const int n = 1 + round % Accelerator::kPacket;
         Ray rays[Accelerator::kPacket];
+        const Vector3f axis =
+            normalize(Vector3f{rng.uniform_float() - 0.5f, rng.uniform_float() - 0.5f, 1.0f});
         for (int i = 0; i < n; ++i) {
-            // Coherent rays (a pencil from near the camera) in even rounds, incoherent ones in odd rounds.
             Point3f o = round % 2 ? Point3f{rng.uniform_float() - 0.5f, rng.uniform_float() - 0.5f,
                                             rng.uniform_float() - 0.5f}
                                   : Point3f{0, 0, -0.9f};
-            Vector3f d =
-                round % 2 ? sample_uniform_sphere({rng.uniform_float(), rng.uniform_float()})
-                          : normalize(Vector3f{rng.uniform_float() - 0.5f, rng.uniform_float() - 0.5f, 1.0f});
+            Vector3f d = round % 2 ? sample_uniform_sphere({rng.uniform_float(), rng.uniform_float()})
+                                   : normalize(axis + Vector3f{rng.uniform_float() - 0.5f,
+                                                               rng.uniform_float() - 0.5f, 0.0f} *
+                                                          0.05f);
             rays[i] = Ray{o, d, i == 2 ? 0.7f : kInfinity};
         }
-        // An untraceable ray (a NaN direction) finds nothing either way.
         if (round % 7 == 3) rays[n - 1].d.x = std::numeric_limits<float>::quiet_NaN();
         Accelerator::Found packet[Accelerator::kPacket];
         const std::uint32_t bits = acc.find_packet(rays, n, packet);
@@ -99,49 +137,38 @@ TEST(CameraPackets, APacketFindsWhatEachRayFindsAlone) {
             EXPECT_EQ(found, bool((bits >> i) & 1u)) << "round " << round << " ray " << i;
             if (!found) continue;
             expect_same(packet[i], alone);
-            ++hits;
-            if (alone.rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) ++instance_hits;
-            if (acc.shape(alone.rh.hit.geomID)) ++sphere_hits;
-            // And the surface the two complete to.
+            ++counts.hits;
+            if (alone.rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID)
+                ++counts.instance_hits;
+            else if (acc.shape(alone.rh.hit.geomID))
+                ++counts.shape_hits;
+            // And the surfaces the two complete to.
             SurfaceHit a, b;
-            ASSERT_TRUE(acc.complete(packet[i], rays[i], &a));
-            ASSERT_TRUE(acc.complete(alone, rays[i], &b));
+            EXPECT_TRUE(acc.complete(packet[i], rays[i], &a));
+            EXPECT_TRUE(acc.complete(alone, rays[i], &b));
             EXPECT_EQ(a.p, b.p);
             EXPECT_EQ(a.n, b.n);
         }
     }
-    // Every kind of geometry was met.
-    EXPECT_GT(hits, 1000);
-    EXPECT_GT(instance_hits, 10);
-    EXPECT_GT(sphere_hits, 10);
+    return counts;
 }
 
-TEST(CameraPackets, ScenesWithSingleRayCallbacksDoNotUsePackets) {
-    const std::string head = R"(
-Camera "perspective"
-Film "rgb" "integer xresolution" 4 "integer yresolution" 4
-WorldBegin
-)";
-    const std::string quad =
-        R"(Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-1 -1 1  1 -1 1  1 1 1  -1 1 1])";
-    EXPECT_TRUE(build(head + quad)->accelerator.packets_supported());
-    // Two analytic shapes are tested outside Embree; a third puts all three in Embree as user geometry.
-    const std::string sphere = "Shape \"sphere\" \"float radius\" 0.1\n";
-    EXPECT_TRUE(build(head + quad + "\n" + sphere + sphere)->accelerator.packets_supported());
-    EXPECT_FALSE(build(head + quad + "\n" + sphere + sphere + sphere)->accelerator.packets_supported());
-    // An alpha cut-out (Embree's filter callback).
-    EXPECT_FALSE(build(head + R"(Shape "trianglemesh" "float alpha" 0.5 "integer indices" [0 1 2]
-                                 "point3 P" [-1 -1 1  1 -1 1  1 1 1])")
-                     ->accelerator.packets_supported());
-    // Bilinear patches (user geometry), also inside an object instance.
-    const std::string patch = R"(Shape "bilinearmesh" "point3 P" [-1 -1 1  1 -1 1  -1 1 1  1 1 1]
-                                 "integer indices" [0 1 2 3])";
-    EXPECT_FALSE(build(head + patch)->accelerator.packets_supported());
-    EXPECT_FALSE(build(head + "ObjectBegin \"p\"\n" + patch + "\nObjectEnd\nObjectInstance \"p\"\n")
-                     ->accelerator.packets_supported());
-    // An analytic shape in an object instance is Embree's user geometry too.
-    EXPECT_FALSE(build(head + "ObjectBegin \"s\"\n" + sphere + "ObjectEnd\nObjectInstance \"s\"\n")
-                     ->accelerator.packets_supported());
+TEST(CameraPackets, APacketFindsWhatEachRayFindsAlone) {
+    auto scene = build(kBox);
+    HitCounts c = expect_packets_match(scene->accelerator, 400);
+    // Every kind of geometry was met.
+    EXPECT_GT(c.hits, 1000);
+    EXPECT_GT(c.instance_hits, 10);
+    EXPECT_GT(c.shape_hits, 10);
+}
+
+TEST(CameraPackets, CallbacksTakeAPacketRayByRay) {
+    auto scene = build(with_callbacks());
+    ASSERT_TRUE(scene->accelerator.packets_supported());
+    HitCounts c = expect_packets_match(scene->accelerator, 2000);
+    EXPECT_GT(c.hits, 5000);
+    EXPECT_GT(c.instance_hits, 30);
+    EXPECT_GT(c.shape_hits, 300);
 }
 
 struct Case {
@@ -167,6 +194,15 @@ void expect_identical(const Image& a, const Image& b) {
     EXPECT_EQ(std::memcmp(a.data(), b.data(), a.pixel_count() * sizeof(a.data()[0])), 0);
 }
 
+TEST(CameraPackets, ScenesWithCurvesDoNotUsePackets) {
+    const std::string curve = R"(Shape "curve" "point3 P" [-0.8 0 0.2  -0.3 0.5 0.2  0.3 -0.5 0.2  0.8 0 0.2]
+                                    "float width" 0.08 "string type" "cylinder")";
+    EXPECT_TRUE(build(kBox)->accelerator.packets_supported());
+    EXPECT_FALSE(build(std::string(kBox) + curve)->accelerator.packets_supported());
+    EXPECT_FALSE(build(std::string(kBox) + "ObjectBegin \"c\"\n" + curve + "\nObjectEnd\nObjectInstance \"c\"\n")
+                     ->accelerator.packets_supported());
+}
+
 TEST(CameraPackets, ImagesAreTheSameWithAndWithoutPackets) {
     auto scene = build(kBox);
     const Case setups[] = {
@@ -181,6 +217,12 @@ TEST(CameraPackets, ImagesAreTheSameWithAndWithoutPackets) {
         double sum = 0;
         for (std::size_t i = 0; i < with.pixel_count(); ++i) sum += std::abs(with.data()[i].g);
         EXPECT_GT(sum, 0); // something was seen
+    }
+    // Callbacks that take the packets ray by ray, alpha cut-outs among them.
+    auto callbacks = build(with_callbacks());
+    for (const Case& s : {Case{"path", "sobol", 4, true}, Case{"albedo", "independent", 3, false}}) {
+        SCOPED_TRACE(s.integrator + " with callbacks");
+        expect_identical(render_with(*callbacks, s, true), render_with(*callbacks, s, false));
     }
     // The thread count does not matter either.
     expect_identical(render_with(*scene, {"path", "sobol", 4, true}, true, 1),
@@ -209,7 +251,6 @@ TEST(CameraPackets, MediaMotionAndTextureFilteringKeepTheirImages) {
     ss << in.rdbuf();
     auto textured = build(ss.str(), dir);
     ASSERT_TRUE(textured->texture_filtering);
-    ASSERT_TRUE(textured->accelerator.packets_supported());
     expect_identical(render_with(*textured, {"path", "sobol", 3, false}, true),
                      render_with(*textured, {"path", "sobol", 3, false}, false));
 }

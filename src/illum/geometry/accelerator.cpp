@@ -53,7 +53,8 @@ void write_bounds(const Bounds3f& b, RTCBounds* out) {
     out->upper_z = b.hi.z;
 }
 
-// User geometry callbacks for analytic shapes (single rays only: illum traces rays one at a time).
+// User geometry callbacks for analytic shapes: intersection for single rays and packets (each_ray),
+// occlusion for single rays (illum traces shadow rays one at a time).
 void shape_bounds(const RTCBoundsFunctionArguments* args) {
     write_bounds(static_cast<const AnalyticShape*>(args->geometryUserPtr)->bounds(), args->bounds_o);
 }
@@ -88,11 +89,44 @@ void record_shape_hit(const AnalyticShape& shape, RTCRayHit* rh, std::uint32_t g
     rh->hit.instID[0] = inst_id;
 }
 
+// An intersect callback's single-ray work on every valid ray of what Embree passes: one ray (N = 1) or a
+// packet (Accelerator::find_packet), whose lanes are copied out and, where `single` made a hit, back.
+template <class Single>
+void each_ray(const RTCIntersectFunctionNArguments* args, Single&& single) {
+    if (args->N == 1) {
+        if (args->valid[0]) single(*reinterpret_cast<RTCRayHit*>(args->rayhit));
+        return;
+    }
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (!args->valid[i]) continue;
+        RTCRayHit rh = rtcGetRayHitFromRayHitN(args->rayhit, args->N, i);
+        const float tfar = rh.ray.tfar;
+        single(rh);
+        if (rh.ray.tfar == tfar) continue;
+        RTCRayN_tfar(RTCRayHitN_RayN(args->rayhit, args->N), args->N, i) = rh.ray.tfar;
+        rtcCopyHitToHitN(RTCRayHitN_HitN(args->rayhit, args->N), &rh.hit, args->N, i);
+    }
+}
+
+// The same for a filter callback: `accepts` sees each valid candidate hit as a single ray and hit (the
+// ray's tfar at the candidate), and a rejected one is marked invalid.
+template <class Accepts>
+void each_candidate(const RTCFilterFunctionNArguments* args, Accepts&& accepts) {
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (!args->valid[i]) continue;
+        const RTCRay r = args->N == 1 ? *reinterpret_cast<const RTCRay*>(args->ray)
+                                      : rtcGetRayFromRayN(args->ray, args->N, i);
+        const RTCHit h = args->N == 1 ? *reinterpret_cast<const RTCHit*>(args->hit)
+                                      : rtcGetHitFromHitN(args->hit, args->N, i);
+        if (!accepts(r, h)) args->valid[i] = 0;
+    }
+}
+
 void shape_intersect(const RTCIntersectFunctionNArguments* args) {
-    if (args->N != 1 || !args->valid[0]) return;
-    record_shape_hit(*static_cast<const AnalyticShape*>(args->geometryUserPtr),
-                     reinterpret_cast<RTCRayHit*>(args->rayhit), args->geomID, args->primID,
-                     args->context->instID[0]);
+    each_ray(args, [&](RTCRayHit& rh) {
+        record_shape_hit(*static_cast<const AnalyticShape*>(args->geometryUserPtr), &rh, args->geomID,
+                         args->primID, args->context->instID[0]);
+    });
 }
 
 // Whether a user geometry's crossing at t (surface coordinates u, v) occludes the ray: a context filter
@@ -159,19 +193,19 @@ std::optional<PatchCrossing> patch_crossing(const PatchUserData& g, std::uint32_
 }
 
 void patch_intersect(const RTCIntersectFunctionNArguments* args) {
-    if (args->N != 1 || !args->valid[0]) return;
     auto* g = static_cast<const PatchUserData*>(args->geometryUserPtr);
-    auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
-    auto x = patch_crossing(*g, args->primID, rh->ray, args->geomID);
-    if (!x) return;
-    rh->ray.tfar = x->t;
-    rh->hit.u = x->u;
-    rh->hit.v = x->v;
-    rh->hit.Ng_x = rh->hit.Ng_y = 0;
-    rh->hit.Ng_z = 1;
-    rh->hit.primID = args->primID;
-    rh->hit.geomID = args->geomID;
-    rh->hit.instID[0] = args->context->instID[0];
+    each_ray(args, [&](RTCRayHit& rh) {
+        auto x = patch_crossing(*g, args->primID, rh.ray, args->geomID);
+        if (!x) return;
+        rh.ray.tfar = x->t;
+        rh.hit.u = x->u;
+        rh.hit.v = x->v;
+        rh.hit.Ng_x = rh.hit.Ng_y = 0;
+        rh.hit.Ng_z = 1;
+        rh.hit.primID = args->primID;
+        rh.hit.geomID = args->geomID;
+        rh.hit.instID[0] = args->context->instID[0];
+    });
 }
 
 void patch_occluded(const RTCOccludedFunctionNArguments* args) {
@@ -391,39 +425,37 @@ void Accelerator::add_moving_instance(std::uint32_t prototype, const AnimatedTra
 // The alpha test at a candidate hit (both closest-hit and shadow rays): evaluate the alpha texture at the
 // hit's uv and reject the hit unless a uniform number from a hash of the ray is below alpha.
 void Accelerator::alpha_filter(const RTCFilterFunctionNArguments* args) {
-    if (args->N != 1 || !args->valid[0]) return;
     const auto* cut = static_cast<const AlphaCutout*>(args->geometryUserPtr);
-    const auto* h = reinterpret_cast<const RTCHit*>(args->hit);
-    const auto* r = reinterpret_cast<const RTCRay*>(args->ray);
     const TriangleMesh& m = *cut->mesh;
-    std::uint32_t tri = h->primID;
-    float b1 = h->u, b2 = h->v, b0 = 1 - b1 - b2;
-    SurfaceHit sh;
-    auto v = m.vertices(tri);
-    sh.p = barycentric(v[0], v[1], v[2], b0, b1, b2);
-    if (!m.uv.empty()) {
-        Point2f t0 = m.uv[m.indices[3 * tri]], t1 = m.uv[m.indices[3 * tri + 1]],
-                t2 = m.uv[m.indices[3 * tri + 2]];
-        sh.uv = {b0 * t0.x + b1 * t1.x + b2 * t2.x, b0 * t0.y + b1 * t1.y + b2 * t2.y};
-    } else {
-        sh.uv = {b1 + b2, b2}; // the default (0,0), (1,0), (1,1) parameterisation
-    }
-    sh.face_index = m.face_index(tri);
-    if (!alpha_keeps(cut->alpha->evaluate(sh), *r, h->geomID, tri)) args->valid[0] = 0;
+    each_candidate(args, [&](const RTCRay& r, const RTCHit& h) {
+        std::uint32_t tri = h.primID;
+        float b1 = h.u, b2 = h.v, b0 = 1 - b1 - b2;
+        SurfaceHit sh;
+        auto v = m.vertices(tri);
+        sh.p = barycentric(v[0], v[1], v[2], b0, b1, b2);
+        if (!m.uv.empty()) {
+            Point2f t0 = m.uv[m.indices[3 * tri]], t1 = m.uv[m.indices[3 * tri + 1]],
+                    t2 = m.uv[m.indices[3 * tri + 2]];
+            sh.uv = {b0 * t0.x + b1 * t1.x + b2 * t2.x, b0 * t0.y + b1 * t1.y + b2 * t2.y};
+        } else {
+            sh.uv = {b1 + b2, b2}; // the default (0,0), (1,0), (1,1) parameterisation
+        }
+        sh.face_index = m.face_index(tri);
+        return alpha_keeps(cut->alpha->evaluate(sh), r, h.geomID, tri);
+    });
 }
 
 // The same for a curve (pbrt-v4's GeometricPrimitive tests every shape's hit, curves' too): the alpha
 // texture at the hit's (u, v) as Curves::fill_hit gives them, u along the segment and v across its width.
 void Accelerator::curve_alpha_filter(const RTCFilterFunctionNArguments* args) {
-    if (args->N != 1 || !args->valid[0]) return;
     const auto* cut = static_cast<const AlphaCutout*>(args->geometryUserPtr);
-    const auto* h = reinterpret_cast<const RTCHit*>(args->hit);
-    const auto* r = reinterpret_cast<const RTCRay*>(args->ray);
-    // In a filter function the ray's tfar is the candidate hit's distance.
-    Ray ray{{r->org_x, r->org_y, r->org_z}, {r->dir_x, r->dir_y, r->dir_z}, r->tfar};
-    SurfaceHit sh;
-    cut->curves->fill_hit(h->primID, h->u, r->tfar, ray, &sh);
-    if (!alpha_keeps(cut->alpha->evaluate(sh), *r, h->geomID, h->primID)) args->valid[0] = 0;
+    each_candidate(args, [&](const RTCRay& r, const RTCHit& h) {
+        // In a filter function the ray's tfar is the candidate hit's distance.
+        Ray ray{{r.org_x, r.org_y, r.org_z}, {r.dir_x, r.dir_y, r.dir_z}, r.tfar};
+        SurfaceHit sh;
+        cut->curves->fill_hit(h.primID, h.u, r.tfar, ray, &sh);
+        return alpha_keeps(cut->alpha->evaluate(sh), r, h.geomID, h.primID);
+    });
 }
 
 std::uint32_t Accelerator::add_mesh(std::unique_ptr<TriangleMesh> mesh, const Material* material,
@@ -601,17 +633,13 @@ void Accelerator::commit() {
             rtcEnableGeometry(g); // (disabled by an earlier commit with fewer shapes)
     }
     if (direct) direct_shapes_ = std::move(analytic);
-    // Packets: no callback that takes single rays only, in the world (less the direct shapes, which Embree
-    // no longer traverses) or in any prototype.
-    auto single_ray_only = [](const Record& r, bool direct_shape) {
-        return r.cutout || r.kind == Kind::Patches || (r.kind == Kind::Analytic && !direct_shape);
+    auto curves = [](const std::vector<Record>& records) {
+        return std::any_of(records.begin(), records.end(),
+                           [](const Record& r) { return r.kind == Kind::Curve; });
     };
-    packets_supported_ = true;
-    for (const Record& r : records_)
-        if (single_ray_only(r, direct)) packets_supported_ = false;
+    packets_supported_ = !curves(records_);
     for (const auto& p : prototypes_)
-        for (const Record& r : p->records)
-            if (single_ray_only(r, false)) packets_supported_ = false;
+        if (curves(p->records)) packets_supported_ = false;
     rtcCommitScene(scene_);
 }
 

@@ -96,11 +96,12 @@ public:
     bool find(const Ray& ray, Found* found) const;
     // find() for n <= kPacket rays at once, traced as one coherent Embree packet (rtcIntersect8): bit i of
     // the result is find(rays[i], &found[i]). The camera rays of one pixel's samples cost about a third of
-    // their single-ray traversal this way (docs/performance.md). Only where packets_supported().
+    // their single-ray traversal this way (docs/performance.md). The user-geometry and alpha callbacks take
+    // a packet's rays one by one. Only where packets_supported().
     static constexpr int kPacket = 8;
     std::uint32_t find_packet(const Ray* rays, int n, Found* found) const;
-    // Whether find_packet() may be used: Embree would call no user-geometry or filter callback of the scene
-    // (bilinear patches, analytic shapes it traverses, alpha cut-outs) with a packet, which they do not take.
+    // Whether find_packet() finds exactly what find() does: not in a scene with curves, whose hits Embree's
+    // packet intersector computes with other roundings than its single-ray one (set by commit()).
     bool packets_supported() const { return packets_supported_; }
     // The surface data of what find() found for the same ray; false if there is nothing to see after all (an
     // instance whose motion scales it through zero at this time).
@@ -226,8 +227,8 @@ private:
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
     std::vector<Record> records_;
-    bool any_passable_ = true;       // until mark_passable() says otherwise
-    bool packets_supported_ = false; // set by commit()
+    bool any_passable_ = true; // until mark_passable() says otherwise
+    bool packets_supported_ = false;
     std::vector<std::unique_ptr<Prototype>> prototypes_;
     Prototype* building_ = nullptr;             // the prototype under construction, if any
     std::vector<PendingCurves> pending_curves_; // the world's
