@@ -2,8 +2,8 @@
 // exactly what the rays find one by one, also where Embree calls illum's callbacks with the packet (analytic
 // shapes and bilinear patches as user geometry, alpha cut-outs, in instances too), and scenes with curves
 // (whose packet hits Embree rounds otherwise) do not use packets; and the render loop gives the same image,
-// bit for bit, with and without packets, for every integrator that takes the packet's hits, both resumable
-// samplers, whole and partial packets, a texture-filtered scene (each sample's ray differentials) and a
+// bit for bit, with and without packets, for every integrator that takes the packet's hits, every
+// sampler, whole and partial packets, a texture-filtered scene (each sample's ray differentials) and a
 // moving camera (each ray's time).
 #include <gtest/gtest.h>
 
@@ -199,16 +199,28 @@ TEST(CameraPackets, ScenesWithCurvesDoNotUsePackets) {
                                     "float width" 0.08 "string type" "cylinder")";
     EXPECT_TRUE(build(kBox)->accelerator.packets_supported());
     EXPECT_FALSE(build(std::string(kBox) + curve)->accelerator.packets_supported());
-    EXPECT_FALSE(build(std::string(kBox) + "ObjectBegin \"c\"\n" + curve + "\nObjectEnd\nObjectInstance \"c\"\n")
-                     ->accelerator.packets_supported());
+    EXPECT_FALSE(
+        build(std::string(kBox) + "ObjectBegin \"c\"\n" + curve + "\nObjectEnd\nObjectInstance \"c\"\n")
+            ->accelerator.packets_supported());
 }
 
 TEST(CameraPackets, ImagesAreTheSameWithAndWithoutPackets) {
     auto scene = build(kBox);
     const Case setups[] = {
-        {"path", "sobol", 5, false},        {"path", "independent", 5, true}, {"path", "sobol", 1, true},
-        {"path", "independent", 8, false},  {"direct", "sobol", 3, false},    {"albedo", "sobol", 2, false},
+        {"path", "sobol", 5, false},
+        {"path", "independent", 5, true},
+        {"path", "sobol", 1, true},
+        {"path", "independent", 8, false},
+        {"direct", "sobol", 3, false},
+        {"albedo", "sobol", 2, false},
         {"normal", "independent", 9, true},
+        // Every other sampler (zsobol's cache of a pixel's digits must follow the resumed sample).
+        {"path", "zsobol", 4, true},
+        {"path", "zsobol", 16, false},
+        {"path", "halton", 5, false},
+        {"path", "pmj02bn", 4, true},
+        {"path", "stratified", 6, false},
+        {"path", "paddedsobol", 3, true},
     };
     for (const Case& s : setups) {
         SCOPED_TRACE(s.integrator + " " + s.sampler + " " + std::to_string(s.spp));

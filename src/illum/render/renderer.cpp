@@ -183,8 +183,8 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     // (the samples of a pixel, or neighbouring pixels, are coherent), and each sample resumed with its hit.
     // The same samples in the same order: the image is the one sample-by-sample tracing gives.
     constexpr int kPacket = Accelerator::kPacket;
-    const bool packets = options.camera_packets && integrator.starts_at_camera_hit() &&
-                         scene.accelerator.packets_supported() && prototype.resumable();
+    const bool packets =
+        options.camera_packets && integrator.starts_at_camera_hit() && scene.accelerator.packets_supported();
 
     // Renders this share's samples k0..k1-1 (global indices share.index(k)) of every pixel.
     auto pass = [&](int k0, int k1) {

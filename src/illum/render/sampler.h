@@ -165,15 +165,21 @@ public:
     }
 
     // Where a pixel sample has got to, for resuming it later: the render loop starts the samples of a
-    // camera-ray packet one after another and continues each once the packet is traced. Only the kinds
-    // whose whole per-sample state is this (resumable()); the others keep caches of their pixel.
+    // camera-ray packet one after another and continues each once the packet is traced. zsobol's cache of
+    // a pixel's digits is not part of it: resume() keeps the cache where it belongs to the resumed sample's
+    // pixel and round, and empties it otherwise.
     struct Position {
         uint32_t index, dimension, reversed_index;
         uint64_t pixel_hash;
         PCG32 rng, pixel_rng;
+        Point2i pixel;
+        uint32_t round, round_index;
+        uint64_t morton_index, halton_index;
     };
-    bool resumable() const { return kind_ == SamplerKind::sobol || kind_ == SamplerKind::independent; }
-    Position position() const { return {index_, dimension_, reversed_index_, pixel_hash_, rng_, pixel_rng_}; }
+    Position position() const {
+        return {index_, dimension_, reversed_index_, pixel_hash_,   rng_,         pixel_rng_,
+                pixel_, round_,     round_index_,    morton_index_, halton_index_};
+    }
     void resume(const Position& p) {
         index_ = p.index;
         dimension_ = p.dimension;
@@ -181,6 +187,12 @@ public:
         pixel_hash_ = p.pixel_hash;
         rng_ = p.rng;
         pixel_rng_ = p.pixel_rng;
+        pixel_ = p.pixel;
+        round_ = p.round;
+        round_index_ = p.round_index;
+        morton_index_ = p.morton_index;
+        halton_index_ = p.halton_index;
+        if (kind_ == SamplerKind::zsobol) key_zsobol_cache();
     }
 
     Point2f get_pixel_2d() {
@@ -224,6 +236,8 @@ private:
     // The kinds after sobol (sampler.cpp). Their dimensions: the pixel offset is dimension pair (0, 1)
     // wherever it is asked for; get_1d() then takes dimension 2, 3, ... one each, get_2d() two each.
     void start_other(Point2i pixel);
+    // zsobol: empties the cache of pixel digits unless it holds those of the current pixel and round.
+    void key_zsobol_cache();
     float other_1d();
     Point2f other_2d();
     Point2f other_pixel_2d();
@@ -259,6 +273,8 @@ private:
     static constexpr uint32_t kZSobolCachedDimensions = 32;
     uint64_t zsobol_cached_ = 0;
     bool zsobol_cache_valid_ = false;
+    uint64_t zsobol_cache_morton_ = 0; // the pixel (Morton index) and round the cache holds digits of
+    uint32_t zsobol_cache_round_ = 0;
     uint64_t zsobol_pixel_digits_[kZSobolCachedDimensions] = {};
     int halton_scale_[2] = {1, 1}, halton_exponent_[2] = {0, 0};
     int64_t halton_inverse_[2] = {0, 0};

@@ -171,11 +171,9 @@ void Sampler::start_other(Point2i pixel) {
         const uint32_t per_pixel = 1u << log2_spp_;
         const uint32_t round = index_ >> log2_spp_;
         const uint64_t morton = morton_2d(uint32_t(pixel.x), uint32_t(pixel.y));
-        if (morton != morton_index_ >> log2_spp_ || round != round_ || !zsobol_cache_valid_)
-            zsobol_cached_ = 0;
-        zsobol_cache_valid_ = true;
         round_ = round, round_index_ = index_ & (per_pixel - 1);
         morton_index_ = (morton << log2_spp_) | round_index_;
+        key_zsobol_cache();
         return;
     }
     if (kind_ == SamplerKind::halton) {
@@ -200,6 +198,15 @@ void Sampler::start_other(Point2i pixel) {
     }
     round_ = index_ / uint32_t(spp_), round_index_ = index_ % uint32_t(spp_);
     pixel_hash_ = hash(seed_, pixel.x, pixel.y, round_);
+}
+
+void Sampler::key_zsobol_cache() {
+    const uint64_t morton = morton_index_ >> log2_spp_;
+    if (zsobol_cache_valid_ && morton == zsobol_cache_morton_ && round_ == zsobol_cache_round_) return;
+    zsobol_cached_ = 0;
+    zsobol_cache_valid_ = true;
+    zsobol_cache_morton_ = morton;
+    zsobol_cache_round_ = round_;
 }
 
 float Sampler::other_1d() {
