@@ -3,6 +3,7 @@
 // bytes whatever the thread count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <vector>
 
 #include "cli_support.h"
 #include "illum/image/image_io.h"
@@ -55,6 +57,22 @@ TEST_F(Cli, VersionAndHelp) {
         EXPECT_EQ(h.exit_code, 0) << sub;
         EXPECT_NE(h.out.find("Usage"), std::string::npos) << sub << ": " << h.out;
     }
+}
+
+TEST_F(Cli, BenchReportsTheRoundWithTheMedianRatio) {
+    CliRun r = illum("bench --json --rounds 3 --resolution 24x24 --spp 2 --rays 20000 --threads 1", dir_);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["ratios"].size(), 3u);
+    std::vector<double> ratios = j["ratios"].get<std::vector<double>>();
+    for (double q : ratios) EXPECT_GT(q, 0.0);
+    std::sort(ratios.begin(), ratios.end());
+    EXPECT_EQ(j["ratio"].get<double>(), ratios[1]);
+    // The reported figures are that round's own: its ratio is its path tracer's rate over its Embree rate.
+    EXPECT_NEAR(j["path_rays_per_second"].get<double>() /
+                    j["embree_incoherent_rays_per_second"].get<double>(),
+                ratios[1], 1e-9 * ratios[1]);
+    expect_error(illum("bench --rounds 0", dir_), "--rounds");
 }
 
 TEST_F(Cli, BuiltInSceneRendersToEveryFormat) {
