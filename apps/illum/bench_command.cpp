@@ -1,7 +1,7 @@
 // `illum bench`: on the built-in Cornell box, the raw Embree closest-hit rate for incoherent rays, the
 // path tracer's rays/s and samples/s at the same thread count, and their ratio. Each round measures the
-// two back to back and forms its own ratio; the figures are the medians over the rounds, so a machine whose
-// speed drifts between rounds (a shared virtual machine) moves both sides of a ratio together.
+// two back to back and forms its own ratio, so a machine whose speed drifts (a shared virtual machine) moves
+// both sides of a ratio together; the figures are those of the round with the median ratio.
 #include <algorithm>
 #include <fmt/core.h>
 #include <memory>
