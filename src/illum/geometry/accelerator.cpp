@@ -697,7 +697,6 @@ std::uint32_t Accelerator::find_packet(const Ray* rays, int n, Found* found) con
     alignas(32) RTCRayHit8 p{};
     for (int i = 0; i < n; ++i) {
         const RTCRay r = to_embree(rays[i], embree_time(rays[i].time));
-        found[i].rh.ray = r;
         valid[i] = traceable(r) ? -1 : 0;
         p.ray.org_x[i] = r.org_x, p.ray.org_y[i] = r.org_y, p.ray.org_z[i] = r.org_z;
         p.ray.dir_x[i] = r.dir_x, p.ray.dir_y[i] = r.dir_y, p.ray.dir_z[i] = r.dir_z;
@@ -715,11 +714,7 @@ std::uint32_t Accelerator::find_packet(const Ray* rays, int n, Found* found) con
     std::uint32_t found_bits = 0;
     for (int i = 0; i < n; ++i) {
         RTCRayHit& rh = found[i].rh;
-        rh.ray.tfar = p.ray.tfar[i];
-        rh.hit.Ng_x = p.hit.Ng_x[i], rh.hit.Ng_y = p.hit.Ng_y[i], rh.hit.Ng_z = p.hit.Ng_z[i];
-        rh.hit.u = p.hit.u[i], rh.hit.v = p.hit.v[i];
-        rh.hit.primID = p.hit.primID[i], rh.hit.geomID = p.hit.geomID[i];
-        rh.hit.instID[0] = p.hit.instID[0][i];
+        rh = rtcGetRayHitFromRayHitN(reinterpret_cast<RTCRayHitN*>(&p), kPacket, unsigned(i));
         if (!valid[i]) continue; // find() returns false for an untraceable ray
         intersect_direct(rh);
         if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) found_bits |= 1u << i;

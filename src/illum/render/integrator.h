@@ -63,13 +63,10 @@ public:
     virtual bool radiometric() const { return true; }
 
 protected:
+    // Accelerator::intersect's two steps, so that a primed hit serves either query.
     bool intersect(const Ray& ray, SurfaceHit* hit, ThreadContext& tc) const {
-        if (tc.primed.pending) [[unlikely]] {
-            Accelerator::Found found;
-            return find(ray, &found, tc) && scene_.accelerator.complete(found, ray, hit);
-        }
-        ++tc.rays;
-        return scene_.intersect(ray, hit);
+        Accelerator::Found found;
+        return find(ray, &found, tc) && scene_.accelerator.complete(found, ray, hit);
     }
     bool find(const Ray& ray, Accelerator::Found* found, ThreadContext& tc) const {
         ++tc.rays;
