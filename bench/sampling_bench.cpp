@@ -1,11 +1,12 @@
 // Sampling kernels: ns per get_2d for each sampler, per Distribution1D sample on 1M entries, per AliasTable
-// sample.
+// sample, per cosine-weighted hemisphere direction.
 #include <benchmark/benchmark.h>
 
 #include <vector>
 
 #include "illum/math/distribution.h"
 #include "illum/math/rng.h"
+#include "illum/math/warp.h"
 #include "illum/render/sampler.h"
 
 namespace illum {
@@ -63,6 +64,17 @@ void BM_PCG32UniformFloat(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_PCG32UniformFloat);
+
+// Random points, so that the concentric map's choice of wedge is as unpredictable as in a path tracer.
+void BM_SampleCosineHemisphere(benchmark::State& state) {
+    PCG32 rng(5);
+    std::vector<Point2f> u(4096);
+    for (auto& p : u) p = {rng.uniform_float(), rng.uniform_float()};
+    std::size_t i = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(sample_cosine_hemisphere(u[i++ & 4095]));
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_SampleCosineHemisphere);
 
 } // namespace
 } // namespace illum

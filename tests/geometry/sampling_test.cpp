@@ -204,5 +204,38 @@ TEST(AnalyticSampling, SolidAnglePdfMatchesAndIntegratesToOne) {
     expect_solid_angle_pdf(cyl, {3, -1, 0}, false, "partial cylinder");
 }
 
+// A caller that does not read uv (an emitter without an image or alpha) gets the same point, error bound
+// and normal as one that does, with uv left zero; one that does gets pbrt's (φ/φmax, θ) parameterisation.
+TEST(AnalyticSampling, ConeSampleWithoutUvIsTheSamePoint) {
+    for (bool flip : {false, true}) {
+        SphereShape sphere(similarity(), 0.5f, -0.5f, 0.5f, float(2 * kPiD), flip);
+        ASSERT_TRUE(sphere.is_round());
+        PCG32 rng(7);
+        int samples = 0;
+        for (int i = 0; i < 2000; ++i) {
+            ShapeSampleContext ctx{Point3f{3, 0, 1}, {}, {}};
+            Point2f u{rng.uniform_float(), rng.uniform_float()};
+            auto with = sphere.sample(ctx, u);
+            ctx.uv_needed = false;
+            auto without = sphere.sample(ctx, u);
+            ASSERT_EQ(bool(with), bool(without));
+            if (!with) continue;
+            ++samples;
+            EXPECT_EQ(with->p, without->p);
+            EXPECT_EQ(with->p_error, without->p_error);
+            EXPECT_EQ(with->n, without->n);
+            EXPECT_EQ(with->pdf.value, without->pdf.value);
+            EXPECT_EQ(without->uv, Point2f(0, 0));
+            // The uv a caller asks for is the point's: z = r cos θ in object space, θ = π (1 - v) for the
+            // whole sphere (θ(zmin) = π, θ(zmax) = 0).
+            Point3f c = sphere.center();
+            float cos_theta = dot(Vector3f(with->p - c) / sphere.world_radius(),
+                                  normalize(Transform::rotate(70, {1, 1, 0})(Vector3f{0, 0, 1})));
+            EXPECT_NEAR(std::cos(kPi * (1 - with->uv.y)), cos_theta, 2e-4f);
+        }
+        EXPECT_GT(samples, 1900);
+    }
+}
+
 } // namespace
 } // namespace illum

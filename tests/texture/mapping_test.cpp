@@ -33,11 +33,11 @@ TEST(TextureMapping, UVScalesAndOffsets) {
 
 TEST(TextureMapping, SphericalIsThetaOverPiAndPhiOverTwoPi) {
     auto m = TextureMapping2D::spherical(Transform());
-    expect_st(m.map(at({0, 0, 2})), 0, 0);          // +z: θ = 0
-    expect_st(m.map(at({3, 0, 0})), 0.5f, 0);       // +x: θ = π/2, φ = 0
-    expect_st(m.map(at({0, 1, 0})), 0.5f, 0.25f);   // +y: φ = π/2
-    expect_st(m.map(at({0, -1, 0})), 0.5f, 0.75f);  // -y: φ = 3π/2 (in [0, 2π))
-    expect_st(m.map(at({0, 0, -1})), 1, 0);         // -z: θ = π
+    expect_st(m.map(at({0, 0, 2})), 0, 0);         // +z: θ = 0
+    expect_st(m.map(at({3, 0, 0})), 0.5f, 0);      // +x: θ = π/2, φ = 0
+    expect_st(m.map(at({0, 1, 0})), 0.5f, 0.25f);  // +y: φ = π/2
+    expect_st(m.map(at({0, -1, 0})), 0.5f, 0.75f); // -y: φ = 3π/2 (in [0, 2π))
+    expect_st(m.map(at({0, 0, -1})), 1, 0);        // -z: θ = π
     // In the texture's space: a texture defined under Translate 0 0 5 sees (0, 0, 6) as +z.
     auto moved = TextureMapping2D::spherical(Transform::translate({0, 0, 5}).inverse());
     expect_st(moved.map(at({0, 0, 6})), 0, 0);
@@ -46,9 +46,9 @@ TEST(TextureMapping, SphericalIsThetaOverPiAndPhiOverTwoPi) {
 
 TEST(TextureMapping, CylindricalIsAngleAndHeight) {
     auto m = TextureMapping2D::cylindrical(Transform());
-    expect_st(m.map(at({1, 0, 0.3f})), 0.5f, 0.3f);   // (π + 0) / 2π
-    expect_st(m.map(at({0, 1, -2})), 0.75f, -2);      // (π + π/2) / 2π
-    expect_st(m.map(at({-1, -1e-7f, 1})), 0.0f, 1);   // just below the seam at atan2 = -π
+    expect_st(m.map(at({1, 0, 0.3f})), 0.5f, 0.3f); // (π + 0) / 2π
+    expect_st(m.map(at({0, 1, -2})), 0.75f, -2);    // (π + π/2) / 2π
+    expect_st(m.map(at({-1, -1e-7f, 1})), 0.0f, 1); // just below the seam at atan2 = -π
 }
 
 TEST(TextureMapping, PlanarProjectsOntoTwoVectors) {
@@ -93,6 +93,26 @@ TEST(Textures, SolidCheckerboardParity) {
     EXPECT_EQ(t.evaluate(at({-1, -1, -1})), 0); // (-1, -1, -1): sum -3
 }
 
+// A constant colour's uplifts are computed once; they are the per-hit uplifts of its value, in every
+// colour space, in spectral and RGB mode (a negative component clamps to 0 as uplift_unbounded does).
+TEST(Textures, ConstantColourUpliftsAreThoseOfItsValue) {
+    for (Color3 c : {Color3(0.2f, 0.9f, 0.4f), Color3(1.4f, 2.6f, 3.1f), Color3(-0.5f, 0.3f, 7.0f)}) {
+        ConstantColorTexture t(c);
+        for (int i = 0; i < RGBColorSpace::kCount; ++i)
+            for (float u : {0.1f, 0.55f}) {
+                SampledWavelengths w = SampledWavelengths::sample_visible(u, &RGBColorSpace::by_index(i));
+                SampledSpectrum unbounded = t.unbounded(at({}), w), expected = uplift_unbounded(c, w);
+                SampledSpectrum albedo = t.albedo(at({}), w), expected_albedo = uplift_albedo(c, w);
+                for (int k = 0; k < kSpectrumSamples; ++k) {
+                    EXPECT_EQ(unbounded[k], expected[k]) << i << " " << k;
+                    EXPECT_EQ(albedo[k], expected_albedo[k]) << i << " " << k;
+                }
+            }
+        SampledWavelengths rgb = SampledWavelengths::rgb_mode();
+        EXPECT_EQ(t.unbounded(at({}), rgb).rgb(), c);
+    }
+}
+
 TEST(Textures, EveryMappingAndTheNewTypesBuildWithoutWarnings) {
     SceneDesc desc = parse_pbrt_string(R"(
 WorldBegin
@@ -110,13 +130,15 @@ Shape "sphere"
                                        "<test>", ".");
     auto scene = build_scene(desc);
     EXPECT_TRUE(scene->warnings.empty()) << scene->warnings.front();
-    EXPECT_THROW(build_scene(parse_pbrt_string("WorldBegin\nTexture \"x\" \"float\" \"checkerboard\" \"string "
-                                               "mapping\" \"conical\"\n",
-                                               "<test>", ".")),
-                 Error);
-    EXPECT_THROW(build_scene(parse_pbrt_string(
-                     "WorldBegin\nTexture \"x\" \"float\" \"checkerboard\" \"integer dimension\" 4\n", "<test>", ".")),
-                 Error);
+    EXPECT_THROW(
+        build_scene(parse_pbrt_string("WorldBegin\nTexture \"x\" \"float\" \"checkerboard\" \"string "
+                                      "mapping\" \"conical\"\n",
+                                      "<test>", ".")),
+        Error);
+    EXPECT_THROW(
+        build_scene(parse_pbrt_string(
+            "WorldBegin\nTexture \"x\" \"float\" \"checkerboard\" \"integer dimension\" 4\n", "<test>", ".")),
+        Error);
 }
 
 } // namespace

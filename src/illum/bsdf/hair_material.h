@@ -46,7 +46,7 @@ private:
         if (absorption_.sigma_a.texture) {
             const SpectralColor& sa = absorption_.sigma_a;
             sigma_a = sa.spectrum && lambda.spectral() ? sa.spectrum->sample(lambda)
-                                                       : uplift_unbounded(sa.texture->evaluate(at), lambda);
+                                                       : sa.texture->unbounded(at, lambda);
         } else if (absorption_.reflectance) {
             SampledSpectrum c = absorption_.reflectance->albedo(at, lambda);
             for (int i = 0; i < kSpectrumSamples; ++i) c[i] = within(c[i], 0, 1);

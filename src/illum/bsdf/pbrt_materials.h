@@ -58,7 +58,7 @@ struct SpectralColor {
     std::shared_ptr<const DenselySampledSpectrum> spectrum;
     SampledSpectrum at(const SurfaceHit& hit, const SampledWavelengths& lambda) const {
         if (spectrum && lambda.spectral()) return spectrum->sample(lambda);
-        return uplift_unbounded(texture->evaluate(hit), lambda);
+        return texture->unbounded(hit, lambda);
     }
 };
 

@@ -16,6 +16,9 @@ struct ShapeSampleContext {
     Point3f p;
     Vector3f p_error;
     Normal3f n; // zero for points not on a surface
+    // Whether the caller reads the sample's uv; a shape may leave it zero otherwise (a sphere's costs an
+    // atan2 and an acos).
+    bool uv_needed = true;
 };
 
 // A point on a shape: what a sample is, before its density.

@@ -110,7 +110,17 @@ std::optional<ShapeSample> SphereShape::sample(const ShapeSampleContext& ctx, Po
     Vector3f n_world = frame.to_world(Vector3f{-w.x, -w.y, -w.z});
     // Uniform over the cone's solid angle 2π (1 - cos θmax).
     SolidAnglePdf pdf(1 / (2 * kPi * one_minus_cos_max));
-    return ShapeSample{world_sample(to_object(c + n_world * world_radius())), pdf};
+    Vec3d p_object = to_object(c + n_world * world_radius());
+    return ShapeSample{ctx.uv_needed ? world_sample(p_object) : world_sample_without_uv(p_object), pdf};
+}
+
+ShapePoint SphereShape::world_sample_without_uv(Vec3d p) const {
+    double len = length(p);
+    Vec3d n = len > 0 ? p * (1 / len) : Vec3d{0, 0, 1}; // as surface_at
+    ShapePoint s;
+    s.p = to_world(n * radius_, &s.p_error);
+    s.n = world_normal(n);
+    return s;
 }
 
 SolidAnglePdf SphereShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,

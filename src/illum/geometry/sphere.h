@@ -43,6 +43,8 @@ protected:
 private:
     // Whether sample() draws from the subtended cone for a receiver at p (else by area).
     bool cone_sampling(Point3f p) const;
+    // world_sample without the uv (left zero): the same point, error bound and normal.
+    ShapePoint world_sample_without_uv(Vec3d p) const;
 
     double radius_, zmin_, zmax_, theta_zmin_, theta_zmax_, phimax_;
     bool full_;

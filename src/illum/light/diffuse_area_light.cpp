@@ -72,7 +72,8 @@ bool DiffuseAreaLight::masked(Point3f p, Normal3f n, Point2f uv) const {
 
 std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContext& ctx, Point2f u,
                                                          const SampledWavelengths& lambda) const {
-    auto ss = shape_->sample({ctx.p, ctx.p_error, ctx.n}, u);
+    // uv is read by the emission image and the alpha texture only.
+    auto ss = shape_->sample({ctx.p, ctx.p_error, ctx.n, image_ || alpha_}, u);
     if (!ss || !(ss->pdf > SolidAnglePdf(0))) return std::nullopt;
     Vector3f d = ss->p - ctx.p;
     float d2 = length_squared(d);

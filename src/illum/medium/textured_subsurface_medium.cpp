@@ -9,8 +9,7 @@ namespace illum {
 SampledSpectrum SubsurfaceParam::at(const TextureEvalContext& ctx, const SampledWavelengths& lambda,
                                     UpliftKind kind) const {
     if (spectrum && lambda.spectral()) return spectrum->sample(lambda);
-    Color3 c = texture->evaluate(ctx);
-    return kind == UpliftKind::Albedo ? uplift_albedo(c, lambda) : uplift_unbounded(c, lambda);
+    return kind == UpliftKind::Albedo ? texture->albedo(ctx, lambda) : texture->unbounded(ctx, lambda);
 }
 
 std::unique_ptr<TexturedSubsurfaceMedium>

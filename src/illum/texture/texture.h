@@ -44,6 +44,11 @@ public:
     virtual SampledSpectrum albedo(const TextureEvalContext& hit, const SampledWavelengths& w) const {
         return uplift_albedo(evaluate(hit), w);
     }
+    // The value as an unbounded quantity (an index of refraction, an absorption coefficient) at the path's
+    // wavelengths: what pbrt-v4's RGBUnboundedSpectrum gives.
+    virtual SampledSpectrum unbounded(const TextureEvalContext& hit, const SampledWavelengths& w) const {
+        return uplift_unbounded(evaluate(hit), w);
+    }
 };
 
 class FloatTexture {
@@ -54,16 +59,21 @@ public:
 
 class ConstantColorTexture final : public ColorTexture {
 public:
-    explicit ConstantColorTexture(Color3 c) : value_(c), albedo_(c, UpliftKind::Albedo) {}
+    // Both uplifts computed once (as pbrt-v4's constant spectrum textures hold their spectra), not per hit.
+    explicit ConstantColorTexture(Color3 c)
+        : value_(c), albedo_(c, UpliftKind::Albedo), unbounded_(c, UpliftKind::Unbounded) {}
     Color3 evaluate(const TextureEvalContext&) const override { return value_; }
     SampledSpectrum albedo(const TextureEvalContext&, const SampledWavelengths& w) const override {
         return albedo_.at(w);
+    }
+    SampledSpectrum unbounded(const TextureEvalContext&, const SampledWavelengths& w) const override {
+        return unbounded_.at(w);
     }
     Color3 value() const { return value_; }
 
 private:
     Color3 value_;
-    UpliftCache albedo_;
+    UpliftCache albedo_, unbounded_;
 };
 
 class ConstantFloatTexture final : public FloatTexture {
