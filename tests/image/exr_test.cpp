@@ -7,6 +7,7 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfThreading.h>
 #include <cstdint>
 #include <cstring>
 #include <half.h>
@@ -58,6 +59,22 @@ void write_half_exr(const std::string& path, int w, int h, const std::vector<std
     Imf::OutputFile file(path.c_str(), header);
     file.setFrameBuffer(fb);
     file.writePixels(dw_h);
+}
+
+// Blocks of scanlines are compressed in OpenEXR's thread pool; the file's bytes do not depend on it.
+TEST(Exr, SameBytesWithAnyCompressionThreadCount) {
+    Image img = test::test_image(301, 97); // several 16-line blocks, the last one partial
+    for (bool half : {false, true}) {
+        const std::string threaded = encode_exr(img, {.half = half});
+        const int threads = Imf::globalThreadCount();
+        Imf::setGlobalThreadCount(0);
+        const std::string serial = encode_exr(img, {.half = half});
+        Imf::setGlobalThreadCount(3);
+        const std::string three = encode_exr(img, {.half = half});
+        Imf::setGlobalThreadCount(threads);
+        EXPECT_EQ(threaded, serial) << half;
+        EXPECT_EQ(three, serial) << half;
+    }
 }
 
 TEST(Exr, ReadsHalfRgba) {

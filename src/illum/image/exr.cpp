@@ -7,11 +7,13 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfRgbaFile.h>
+#include <ImfThreading.h>
 #include <ImfVersion.h>
 #include <algorithm>
 #include <cstring>
 #include <exception>
 #include <half.h>
+#include <thread>
 #include <vector>
 
 #include "illum/util/error.h"
@@ -184,7 +186,14 @@ std::string encode_exr(const Image& image, const ExrLayout& layout) {
         const Imf::PixelType type = layout.half ? Imf::HALF : Imf::FLOAT;
         for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(type));
         StringOStream stream(out);
-        Imf::OutputFile file(stream, header);
+        // OpenEXR compresses blocks of scanlines in its own thread pool when it has one (the bytes do not
+        // depend on it: each block is compressed alone and written in order).
+        static const bool pool = [] {
+            Imf::setGlobalThreadCount(int(std::max(1u, std::thread::hardware_concurrency())));
+            return true;
+        }();
+        (void)pool;
+        Imf::OutputFile file(stream, header, Imf::globalThreadCount());
         Imf::FrameBuffer fb;
         // OpenEXR addresses a slice by the data window's absolute coordinates: the base pointer is moved
         // back by the window's origin (Slice::Make does that arithmetic without forming the pointer early).
