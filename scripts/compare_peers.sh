@@ -30,6 +30,10 @@ Options:
   --runs N             whole-process runs per renderer and scene; the median is reported (default 5)
   --scenes "a b"       scene folders of DIR/scenes (default: every folder holding a test.pbrt)
   --spp N              samples per pixel of every scene and renderer (default: each scene's own)
+  --integrator "D"     render every scene with this Integrator directive in place of its own, e.g.
+                       'bdpt "integer maxdepth" [ 5 ]' (both renderers read the same altered copy of
+                       test.pbrt, made in the output folder beside links to the scene's files; Cycles,
+                       a path tracer, is left out)
   --equal-time S       also render each scene for about S seconds with each renderer (illum --time S;
                        pbrt-v4 at the spp its timed runs predict for the wall time illum's run took)
                        and print the RMSE of each against DIR/refs/spectral/<scene>.exr
@@ -60,6 +64,7 @@ scenes=""
 spp_override=""
 equal_time=""
 out_dir=""
+integrator_override=""
 
 need_value() {
     [[ $# -ge 2 && -n "$2" ]] || die "$1 needs a value (see --help)"
@@ -76,6 +81,7 @@ while [[ $# -gt 0 ]]; do
         --scenes) need_value "$@"; scenes="$2"; shift 2 ;;
         --spp) need_value "$@"; spp_override="$2"; shift 2 ;;
         --equal-time) need_value "$@"; equal_time="$2"; shift 2 ;;
+        --integrator) need_value "$@"; integrator_override="$2"; shift 2 ;;
         --quick) runs=1; spp_override=4; shift ;;
         --out) need_value "$@"; out_dir="$2"; shift 2 ;;
         -h | --help) usage; exit 0 ;;
@@ -91,6 +97,12 @@ positive_integer --runs "$runs"
 [[ -z "$spp_override" ]] || positive_integer --spp "$spp_override"
 if [[ -n "$equal_time" ]]; then
     [[ "$equal_time" =~ ^[0-9]*\.?[0-9]+$ ]] || die "--equal-time takes seconds, not '$equal_time'"
+fi
+if [[ -n "$integrator_override" ]]; then
+    [[ "$integrator_override" =~ ^\"?[a-z]+ ]] ||
+        die "--integrator takes a directive's name and parameters, e.g. 'bdpt \"integer maxdepth\" [ 5 ]'"
+    [[ -z "$blender" ]] || echo "compare_peers.sh: --integrator: Cycles is left out" >&2
+    blender=""
 fi
 
 # Paths become absolute: every renderer runs from its scene's folder.
@@ -181,6 +193,38 @@ for directive, args in statements:
         break
 print(width, height, spp, integrator)
 PY
+}
+
+# The scene folder to render: the shared one, or with --integrator a folder in the output holding links
+# to every file of the shared one and a copy of test.pbrt whose Integrator directive (its line and the
+# indented parameter lines after it) is replaced, or added before WorldBegin where it has none.
+scene_folder() {
+    local scene="$1" shared_folder="$shared/scenes/$1"
+    if [[ -z "$integrator_override" ]]; then
+        echo "$shared_folder"
+        return
+    fi
+    local variant="$out_dir/$scene/scene"
+    mkdir -p "$variant"
+    local entry
+    for entry in "$shared_folder"/*; do
+        [[ "$(basename "$entry")" == test.pbrt ]] || ln -sfn "$entry" "$variant/$(basename "$entry")"
+    done
+    python3 - "$shared_folder/test.pbrt" "$variant/test.pbrt" "$integrator_override" <<'PY' ||
+import re, sys
+text = open(sys.argv[1]).read()
+directive = "Integrator " + re.sub(r'^(\w+)', r'"\1"', sys.argv[3].strip()) + "\n"
+pattern = re.compile(r'^Integrator\b[^\n]*\n(?:[ \t]+"[^\n]*\n)*', re.M)
+if pattern.search(text):
+    text = pattern.sub(lambda m: directive, text, count=1)
+elif re.search(r'^WorldBegin\b', text, re.M):
+    text = re.sub(r'^WorldBegin\b', lambda m: directive + "\n" + m.group(0), text, count=1, flags=re.M)
+else:
+    sys.exit("no Integrator directive and no WorldBegin in " + sys.argv[1])
+open(sys.argv[2], "w").write(text)
+PY
+        die "could not write $variant/test.pbrt"
+    echo "$variant"
 }
 
 # One field of a JSON file, e.g. json_field FILE rmse all; "" when the file or the field is missing
@@ -301,6 +345,7 @@ echo
 echo "- date: $(date -u '+%Y-%m-%d %H:%M UTC'); machine: $(uname -m), $(nproc) cores; threads: $threads;" \
      "runs: $runs (median of whole processes)${spp_override:+; spp: $spp_override for every scene}"
 echo "- illum: $illum_version ($illum), --spectral"
+[[ -z "$integrator_override" ]] || echo "- every scene with: Integrator $integrator_override"
 [[ -z "$pbrt" ]] || echo "- pbrt-v4: $pbrt_version ($pbrt)"
 [[ -z "$blender" ]] || echo "- Cycles: $blender_version ($blender), CPU"
 echo "- output: $out_dir"
@@ -341,9 +386,9 @@ rows=()
 cycles_row=""
 
 for scene in $scenes; do
-    folder="$shared/scenes/$scene"
     scene_out="$out_dir/$scene"
     mkdir -p "$scene_out"
+    folder="$(scene_folder "$scene")"
     header="$(scene_header "$folder/test.pbrt")" || die "could not read $folder/test.pbrt"
     read -r width height scene_spp integrator <<<"$header"
     spp="${spp_override:-$scene_spp}"
