@@ -42,10 +42,17 @@ bool SphereShape::inside_clip(Vec3d p) const {
     return phimax_ >= 2 * kPiD || azimuth(p.x, p.y) <= phimax_;
 }
 
-AnalyticShape::SurfacePoint SphereShape::surface_at(Vec3d p) const {
+namespace {
+// The unit outward normal at the sphere point nearest p (+z for the centre itself).
+Vec3d normal_towards(Vec3d p) {
     double len = length(p);
+    return len > 0 ? p * (1 / len) : Vec3d{0, 0, 1};
+}
+} // namespace
+
+AnalyticShape::SurfacePoint SphereShape::surface_at(Vec3d p) const {
     SurfacePoint s;
-    s.n = len > 0 ? p * (1 / len) : Vec3d{0, 0, 1};
+    s.n = normal_towards(p);
     s.p = s.n * radius_;
     double phi = azimuth(s.p.x, s.p.y), theta = std::acos(std::clamp(s.n.z, -1.0, 1.0));
     s.uv = {float(phi / phimax_), float((theta - theta_zmin_) / (theta_zmax_ - theta_zmin_))};
@@ -115,8 +122,7 @@ std::optional<ShapeSample> SphereShape::sample(const ShapeSampleContext& ctx, Po
 }
 
 ShapePoint SphereShape::world_sample_without_uv(Vec3d p) const {
-    double len = length(p);
-    Vec3d n = len > 0 ? p * (1 / len) : Vec3d{0, 0, 1}; // as surface_at
+    Vec3d n = normal_towards(p); // surface_at's point and normal
     ShapePoint s;
     s.p = to_world(n * radius_, &s.p_error);
     s.n = world_normal(n);
