@@ -37,6 +37,8 @@ Options:
   --equal-time S       also render each scene for about S seconds with each renderer (illum --time S;
                        pbrt-v4 at the spp its timed runs predict for the wall time illum's run took)
                        and print the RMSE of each against DIR/refs/spectral/<scene>.exr
+  --adaptive           illum's equal-time renders use adaptive sampling (--adaptive) where the scene's
+                       integrator renders pixel by pixel (path, volpath); the others as they are
   --quick              1 run at 4 spp: checks the script, measures nothing
   --out DIR            where images, logs and peers.csv go (default: a new folder under /tmp)
   -h, --help           this text
@@ -65,6 +67,7 @@ spp_override=""
 equal_time=""
 out_dir=""
 integrator_override=""
+adaptive=0
 
 need_value() {
     [[ $# -ge 2 && -n "$2" ]] || die "$1 needs a value (see --help)"
@@ -82,6 +85,7 @@ while [[ $# -gt 0 ]]; do
         --spp) need_value "$@"; spp_override="$2"; shift 2 ;;
         --equal-time) need_value "$@"; equal_time="$2"; shift 2 ;;
         --integrator) need_value "$@"; integrator_override="$2"; shift 2 ;;
+        --adaptive) adaptive=1; shift ;;
         --quick) runs=1; spp_override=4; shift ;;
         --out) need_value "$@"; out_dir="$2"; shift 2 ;;
         -h | --help) usage; exit 0 ;;
@@ -346,6 +350,7 @@ echo "- date: $(date -u '+%Y-%m-%d %H:%M UTC'); machine: $(uname -m), $(nproc) c
      "runs: $runs (median of whole processes)${spp_override:+; spp: $spp_override for every scene}"
 echo "- illum: $illum_version ($illum), --spectral"
 [[ -z "$integrator_override" ]] || echo "- every scene with: Integrator $integrator_override"
+[[ $adaptive -eq 0 || -z "$equal_time" ]] || echo "- illum's equal-time renders of path and volpath scenes: --adaptive"
 [[ -z "$pbrt" ]] || echo "- pbrt-v4: $pbrt_version ($pbrt)"
 [[ -z "$blender" ]] || echo "- Cycles: $blender_version ($blender), CPU"
 echo "- output: $out_dir"
@@ -446,8 +451,12 @@ for scene in $scenes; do
         reference="$shared/refs/spectral/$scene.exr"
         eq_illum_spp="" eq_illum_s="" eq_illum_rmse="" eq_pbrt_spp="" eq_pbrt_s="" eq_pbrt_rmse=""
         eq_illum_trim="" eq_pbrt_trim=""
+        eq_illum_args=()
+        if [[ $adaptive -eq 1 && ( "$integrator" == path || "$integrator" == volpath ) ]]; then
+            eq_illum_args=(--adaptive)
+        fi
         if [[ $illum_ok -eq 1 ]] && timed_run "$folder" "$scene_out/illum-equal-time.log" "$illum" render \
-            test.pbrt --threads "$threads" --spectral --time "$equal_time" \
+            test.pbrt --threads "$threads" --spectral --time "$equal_time" "${eq_illum_args[@]}" \
             -o "$scene_out/illum-equal-time.exr" --quiet --stats "$scene_out/illum-equal-time.json"; then
             eq_illum_spp="$(json_field "$scene_out/illum-equal-time.json" spp)"
             eq_illum_s="$run_seconds"

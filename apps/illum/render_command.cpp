@@ -46,6 +46,9 @@ struct RenderArgs {
     std::string share; // "R/N": render rank R's share of an N-rank job alone
     std::string serve; // "HOST:PORT" or "PORT" of the live preview
     double serve_linger = 0;
+    bool adaptive = false;
+    double adaptive_threshold = 0;
+    int adaptive_min_spp = 16;
 };
 
 void check_output_folder_only(const std::string& path) {
@@ -100,6 +103,12 @@ void write_stats(const std::string& path, const RenderArgs& args, const Scene& s
     j["nonfinite_samples"] = r.nonfinite_samples;
     j["mode"] = args.spectral ? "spectral" : "rgb";
     j["color_space"] = std::string(scene.color_space->name());
+    if (r.adaptive)
+        j["adaptive"] = {{"min_spp", r.adaptive->min_spp},
+                         {"max_spp", r.adaptive->max_spp},
+                         {"rounds", r.adaptive->rounds},
+                         {"level", r.adaptive->level},
+                         {"threshold", args.adaptive_threshold}};
     std::string tmp = path + ".tmp";
     {
         std::ofstream out(tmp);
@@ -176,6 +185,9 @@ Prepared prepare(const RenderArgs& args, bool lead, bool quiet) {
     p.options.sampler_settings = p.scene->request.sampler_settings;
     p.options.quiet = quiet;
     p.options.spectral = args.spectral;
+    p.options.adaptive.enabled = args.adaptive || args.adaptive_threshold > 0;
+    p.options.adaptive.threshold = args.adaptive_threshold;
+    p.options.adaptive.min_spp = args.adaptive_min_spp;
     p.write_options.exposure_stops = args.exposure;
     p.write_options.tonemap = *tonemap;
     // EXR output as pbrt-v4 writes its film: half precision unless the film says "savefp16" false (also for
@@ -253,6 +265,10 @@ void run(const RenderArgs& args) {
                        : "",
                    result.spp, result.seconds, result.samples / result.seconds, result.rays / result.seconds,
                    ranks > 1 ? fmt::format("{} ranks of ", ranks) : "", result.threads);
+    if (!args.quiet && result.adaptive)
+        fmt::print(stderr, "adaptive: {}-{} samples per pixel in {} rounds, error level {:.3g} at the last\n",
+                   result.adaptive->min_spp, result.adaptive->max_spp, result.adaptive->rounds,
+                   result.adaptive->level);
     if (server) {
         server->finish();
         if (args.serve_linger > 0) {
@@ -277,6 +293,29 @@ void add_render_command(CLI::App& app) {
         ->check(positive_integer());
     cmd->add_option("--time", args->time, "Render whole passes until this many seconds are spent")
         ->check(positive_number());
+    cmd->add_flag(
+        "--adaptive", args->adaptive,
+        "Adaptive sampling: the samples (spp x pixels, or --time) spread over the pixels in rounds, "
+        "each pixel taking samples in proportion to the spread of its own and its neighbours' "
+        "samples (which minimises the image's mean squared error); path, volpath, direct and the "
+        "debug passes, in one process");
+    cmd->add_option("--adaptive-threshold", args->adaptive_threshold,
+                    "With adaptive sampling, also stop pixels whose error level e = s / (n m) is below this "
+                    "(s: the spread of the samples around the pixel, n: its samples, m: the image's mean), "
+                    "ending the render early once all are; implies --adaptive (default 0: the budget "
+                    "decides)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--adaptive-min-spp", args->adaptive_min_spp,
+                    "With adaptive sampling, the samples every pixel takes first: a power of two, at least 2 "
+                    "(default 16)")
+        ->check(positive_integer())
+        ->check(CLI::Validator(
+            [](const std::string& v) {
+                const int n = std::atoi(v.c_str());
+                return n >= 2 && (n & (n - 1)) == 0 ? std::string()
+                                                    : "must be a power of two, at least 2, not \"" + v + "\"";
+            },
+            "POWER OF TWO"));
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
         ->check(positive_integer());
     cmd->add_option("--seed", args->seed,

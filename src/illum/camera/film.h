@@ -39,6 +39,8 @@ public:
         for (int c = 0; c < 3; ++c) px[c] += double(l[c]) * weight;
         px[3] += weight;
     }
+    // Pixel (x, y)'s sums: Σ w L as rgb, then Σ w.
+    const double* pixel_sums(int x, int y) const { return &sums_[(std::size_t(y) * width_ + x) * 4]; }
     // The image of the mean radiance: its Color3 pixels hold W m^-2 sr^-1 (the output boundary, where the
     // unit leaves the type; EXR and PFM keep it linear).
     Image resolve() const;

@@ -47,6 +47,30 @@ std::vector<Tile> make_tiles(const PixelBounds& b, int size) {
     return tiles;
 }
 
+// An adaptive round's work: runs of pixels along each row, each of about kRoundTileSamples of the round's
+// samples (a pixel with more is a tile of its own), so that the threads finish the round together although
+// a few pixels take most of its samples.
+constexpr std::uint64_t kRoundTileSamples = 1024;
+std::vector<Tile> round_tiles(const PixelBounds& b, const AdaptiveSchedule& schedule) {
+    std::vector<Tile> tiles;
+    for (int y = b.y0; y < b.y1; ++y) {
+        int x0 = -1;
+        std::uint64_t samples = 0;
+        for (int x = b.x0; x < b.x1; ++x) {
+            const std::uint64_t n = std::uint64_t(schedule.to(x, y) - schedule.from(x, y));
+            if (n == 0) continue;
+            if (x0 >= 0 && samples + n > kRoundTileSamples) {
+                tiles.push_back({x0, y, x, y + 1});
+                x0 = -1;
+            }
+            if (x0 < 0) x0 = x, samples = 0;
+            samples += n;
+        }
+        if (x0 >= 0) tiles.push_back({x0, y, b.x1, y + 1});
+    }
+    return tiles;
+}
+
 // A whole-image integrator's result, cropped to the film's pixel bounds. Light tracing, BDPT and photon
 // mapping render the whole film: their light paths splat onto any pixel, so the kept pixels are only
 // right if every pixel's paths were traced (pbrt-v4 traces the crop's alone, which leaves out the light
@@ -96,8 +120,13 @@ int sum_over_group(const RenderOptions& options, int passes, std::span<double> a
 RenderResult render(const Scene& scene, const Integrator& integrator, const RenderOptions& options) {
     if (options.spp <= 0 && options.time_budget <= 0) throw Error("samples per pixel must be positive");
     const PixelBounds bounds = scene.output_bounds();
-    if (auto* whole = dynamic_cast<const WholeImageIntegrator*>(&integrator))
+    if (auto* whole = dynamic_cast<const WholeImageIntegrator*>(&integrator)) {
+        if (options.adaptive.enabled && !whole->adapts_samples())
+            throw Error("adaptive sampling works with the integrators that render pixel by pixel (path, "
+                        "volpath, direct and the debug passes), not with one whose light paths splat over "
+                        "the whole image (lightpath, bdpt, sppm, vcm)");
         return cropped(whole->render_image(options), scene);
+    }
     // The film covers the full image (a preview shows the kept pixels in place); only the pixels of
     // `bounds` are rendered, each from its own (seed, pixel, index) sample sequence, so they equal the
     // same pixels of an uncropped render.
@@ -107,7 +136,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     RenderArena arena(threads);
 
     Film film(w, h);
-    std::vector<Tile> tiles = make_tiles(bounds, options.tile_size);
+    const std::vector<Tile> tiles = make_tiles(bounds, options.tile_size);
     const Sampler prototype = make_sampler(options, options.spp > 0 ? options.spp : 1, {w, h});
     tbb::enumerable_thread_specific<ThreadContext> contexts([&] { return ThreadContext(prototype); });
     std::atomic<std::uint64_t> nonfinite{0};
@@ -186,43 +215,49 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     const bool packets =
         options.camera_packets && integrator.starts_at_camera_hit() && scene.accelerator.packets_supported();
 
-    // Renders this share's samples k0..k1-1 (global indices share.index(k)) of every pixel.
-    auto pass = [&](int k0, int k1) {
+    // Renders this share's samples [first(x, y), last(x, y)) of each pixel of the tiles (global indices
+    // share.index(k)).
+    auto render_samples = [&](const std::vector<Tile>& tiles, auto&& first, auto&& last) {
         arena.execute([&] {
             tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1), [&](const auto& range) {
                 ThreadContext& tc = contexts.local();
                 CameraSample batch[kPacket];
                 Ray rays[kPacket];
                 Accelerator::Found found[kPacket];
-                int ray_sample[kPacket];
-                const int nk = k1 - k0;
+                int ray_sample[kPacket], sample_x[kPacket];
                 for (std::size_t ti = range.begin(); ti != range.end(); ++ti) {
                     const Tile& t = tiles[ti];
-                    const int row = (t.x1 - t.x0) * nk; // samples in a row of the tile
+                    std::uint64_t samples = 0;
                     for (int y = t.y0; y < t.y1; ++y) {
                         if (!packets) {
                             for (int x = t.x0; x < t.x1; ++x)
-                                for (int k = k0; k < k1; ++k) {
+                                for (int k = first(x, y), k1 = last(x, y); k < k1; ++k, ++samples) {
                                     start_sample(tc, x, y, share.index(k), &batch[0]);
                                     finish_sample(tc, x, y, batch[0]);
                                 }
                             continue;
                         }
-                        for (int i0 = 0; i0 < row; i0 += kPacket) {
-                            const int n = std::min(kPacket, row - i0);
-                            int n_rays = 0;
-                            for (int j = 0; j < n; ++j) {
-                                CameraSample& s = batch[j];
-                                const int i = i0 + j;
-                                start_sample(tc, t.x0 + i / nk, y, share.index(k0 + i % nk), &s);
+                        // The row's samples, pixel by pixel and each pixel's in turn, up to kPacket at a
+                        // time.
+                        int x = t.x0, k = first(x, y), k_end = last(x, y);
+                        for (;;) {
+                            int n = 0, n_rays = 0;
+                            for (; n < kPacket; ++n) {
+                                while (k >= k_end && ++x < t.x1) k = first(x, y), k_end = last(x, y);
+                                if (x >= t.x1) break;
+                                CameraSample& s = batch[n];
+                                start_sample(tc, x, y, share.index(k++), &s);
+                                sample_x[n] = x;
                                 s.lambda = tc.lambda;
                                 s.rd = tc.camera_differentials;
                                 s.position = tc.sampler.position();
                                 if (s.cr) {
-                                    ray_sample[n_rays] = j;
+                                    ray_sample[n_rays] = n;
                                     rays[n_rays++] = s.cr->ray;
                                 }
                             }
+                            if (n == 0) break;
+                            samples += std::uint64_t(n);
                             // A lone ray goes the integrator's own way.
                             const std::uint32_t hits =
                                 n_rays > 1 ? scene.accelerator.find_packet(rays, n_rays, found) : 0;
@@ -240,27 +275,70 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                     }
                                     ++r;
                                 }
-                                const int i = i0 + j;
-                                finish_sample(tc, t.x0 + i / nk, y, s);
+                                finish_sample(tc, sample_x[j], y, s);
                             }
                         }
                     }
-                    progress.add(std::uint64_t(t.x1 - t.x0) * (t.y1 - t.y0) * (k1 - k0));
+                    progress.add(samples);
                 }
             });
         });
     };
-
-    const int passes = run_passes(options, progress, pass, [&](int) { return film.resolve(); });
-    progress.finish();
+    // Samples k0..k1-1 of every pixel.
+    auto pass = [&](int k0, int k1) {
+        render_samples(
+            tiles, [k0](int, int) { return k0; }, [k1](int, int) { return k1; });
+    };
 
     RenderResult r;
-    for (auto& tc : contexts) r.rays += tc.rays;
-    r.nonfinite_samples = nonfinite;
-    r.spp = sum_over_group(options, passes, film.accumulators(), r);
+    // This process's counters (before they are summed over a group).
+    auto count = [&] {
+        for (auto& tc : contexts) r.rays += tc.rays;
+        r.nonfinite_samples = nonfinite;
+    };
+    if (options.adaptive.enabled) {
+        if (options.group)
+            throw Error("adaptive sampling renders in one process: it cannot share its samples with other "
+                        "ranks (mpirun or --share)");
+        AdaptiveSchedule schedule(bounds, options.adaptive);
+        const std::uint64_t budget = pixels * std::uint64_t(std::max(options.spp, 1));
+        for (;;) {
+            // Every round plans for the whole render: spp × pixels samples, or with a time budget those
+            // taken so far and as many as the time left allows at the rate so far.
+            std::uint64_t round_budget = budget;
+            if (timed && schedule.rounds() >= 2) {
+                const double elapsed = progress.elapsed_seconds(), left = options.time_budget - elapsed;
+                if (!(left > 0)) break;
+                round_budget = schedule.taken() + std::uint64_t(double(schedule.taken()) / elapsed * left);
+            } else if (timed) {
+                round_budget = pixels * std::uint64_t(options.adaptive.min_spp);
+            }
+            if (schedule.plan(film, round_budget) == 0) break;
+            render_samples(
+                round_tiles(bounds, schedule), [&](int x, int y) { return schedule.from(x, y); },
+                [&](int x, int y) { return schedule.to(x, y); });
+            schedule.commit();
+            if (timed) progress.set_fraction(progress.elapsed_seconds() / options.time_budget);
+            if (options.preview)
+                options.preview->frame(film.resolve(), int(schedule.taken() / pixels), 0,
+                                       timed ? std::min(1.0, progress.elapsed_seconds() / options.time_budget)
+                                             : double(schedule.taken()) / double(budget));
+        }
+        progress.finish();
+        count();
+        r.spp = int((schedule.taken() + pixels / 2) / pixels);
+        r.samples = schedule.taken();
+        r.adaptive = RenderResult::Adaptive{schedule.min_taken(), schedule.max_taken(), schedule.rounds(),
+                                            schedule.level()};
+    } else {
+        const int passes = run_passes(options, progress, pass, [&](int) { return film.resolve(); });
+        progress.finish();
+        count();
+        r.spp = sum_over_group(options, passes, film.accumulators(), r);
+        r.samples = pixels * std::uint64_t(r.spp);
+    }
     r.seconds = progress.elapsed_seconds();
     r.image = crop(film.resolve(), bounds);
-    r.samples = pixels * std::uint64_t(r.spp);
     r.threads = threads;
     return r;
 }

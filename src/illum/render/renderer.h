@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "illum/image/image.h"
+#include "illum/render/adaptive_sampling.h"
 #include "illum/render/integrator.h"
 #include "illum/render/render_group.h"
 #include "illum/render/render_preview.h"
@@ -36,12 +38,23 @@ struct RenderOptions {
     // The camera rays of neighbouring samples traced as one Embree packet where the scene and integrator
     // allow it (renderer.cpp); the image is the same either way (tests compare the two).
     bool camera_packets = true;
+    // Samples spread over the pixels by their noise (adaptive_sampling.h): spp × pixels samples in all, or
+    // the time budget; pixel-by-pixel integrators only, in one process.
+    AdaptiveSettings adaptive;
 };
 
 struct RenderResult {
     Image image;
     double seconds = 0;
-    int spp = 0; // samples per pixel actually taken
+    int spp = 0; // samples per pixel actually taken (adaptive sampling: their mean, rounded)
+    // Adaptive sampling: the fewest and most samples a pixel took, the rounds, and the error level e at
+    // which the last round stopped its pixels (adaptive_sampling.h).
+    struct Adaptive {
+        std::uint32_t min_spp = 0, max_spp = 0;
+        int rounds = 0;
+        double level = 0;
+    };
+    std::optional<Adaptive> adaptive;
     std::uint64_t samples = 0;
     std::uint64_t rays = 0;
     std::uint64_t nonfinite_samples =
@@ -62,6 +75,8 @@ class WholeImageIntegrator : public Integrator {
 public:
     using Integrator::Integrator;
     virtual RenderResult render_image(const RenderOptions& options) const = 0;
+    // Whether options.adaptive is honoured (volpath with its caustics: its camera paths are adaptive).
+    virtual bool adapts_samples() const { return false; }
     // Not a per-camera-sample estimator.
     Radiance3 estimate(const Ray&, ThreadContext&) const override { return {}; }
 };

@@ -19,6 +19,8 @@ class VolPathCausticsIntegrator final : public WholeImageIntegrator {
 public:
     VolPathCausticsIntegrator(const Scene& scene, int max_depth);
     RenderResult render_image(const RenderOptions& options) const override;
+    // The camera paths are spread by adaptive sampling; the light-tracing pass stays uniform.
+    bool adapts_samples() const override { return true; }
 
 private:
     VolPathIntegrator camera_paths_;

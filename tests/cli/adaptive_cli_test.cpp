@@ -1,0 +1,48 @@
+// Adaptive sampling through the command line: --adaptive renders within the budget and writes its figures to
+// --stats; --adaptive-threshold implies it and can end the render early; bad settings and integrators that
+// splat are refused with one-line errors before anything is written.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_support.h"
+
+namespace {
+
+using namespace cli_support;
+
+TEST(AdaptiveCli, RendersWithinTheBudgetAndReportsItsRounds) {
+    const fs::path dir = fresh_test_folder("adaptive");
+    CliRun a = illum("render --resolution 48x32 --spp 32 --adaptive -o a.exr --stats a.json", dir);
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    EXPECT_NE(a.err.find("adaptive: 16-"), std::string::npos) << a.err;
+    auto stats = nlohmann::json::parse(read_bytes(dir / "a.json"));
+    EXPECT_LE(stats["samples"].get<long long>(), 48LL * 32 * 32);
+    EXPECT_EQ(stats["adaptive"]["min_spp"], 16);
+    EXPECT_GT(stats["adaptive"]["max_spp"].get<int>(), 32);
+    EXPECT_GT(stats["adaptive"]["level"].get<double>(), 0);
+    // A threshold no pixel is above: the first two rounds (16 samples a pixel) and no more.
+    CliRun t = illum(
+        "render --resolution 48x32 --spp 256 --adaptive-threshold 1000 -o t.exr --stats t.json --quiet", dir);
+    ASSERT_EQ(t.exit_code, 0) << t.err;
+    auto ts = nlohmann::json::parse(read_bytes(dir / "t.json"));
+    EXPECT_EQ(ts["samples"].get<long long>(), 48LL * 32 * 16);
+    EXPECT_EQ(ts["adaptive"]["rounds"], 3); // two that rendered, one that found nothing to add
+    fs::remove_all(dir);
+}
+
+TEST(AdaptiveCli, BadSettingsAndSplattingIntegratorsAreRefused) {
+    const fs::path dir = fresh_test_folder("adaptive-bad");
+    CliRun m = illum("render --resolution 8x8 --spp 4 --adaptive --adaptive-min-spp 12 -o m.exr", dir);
+    EXPECT_EQ(m.exit_code, 2);
+    EXPECT_NE(m.err.find("power of two"), std::string::npos) << m.err;
+    CliRun n = illum("render --resolution 8x8 --spp 4 --adaptive-threshold -1 -o n.exr", dir);
+    EXPECT_EQ(n.exit_code, 2) << n.err;
+    CliRun b = illum("render --resolution 8x8 --spp 4 --adaptive --integrator bdpt -o b.exr", dir);
+    EXPECT_EQ(b.exit_code, 2);
+    EXPECT_NE(b.err.find("pixel by pixel"), std::string::npos) << b.err;
+    for (const char* f : {"m.exr", "n.exr", "b.exr"}) EXPECT_FALSE(fs::exists(dir / f)) << f;
+    fs::remove_all(dir);
+}
+
+} // namespace
