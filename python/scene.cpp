@@ -106,7 +106,7 @@ py::object render_scene(PyScene& self, const py::object& spp, const py::object& 
                         const py::object& seed, const py::object& threads,
                         std::optional<std::string> integrator, const py::object& max_depth,
                         std::optional<std::string> sampler, bool spectral, std::optional<double> time,
-                        bool progress, bool stats) {
+                        bool adaptive, double adaptive_threshold, bool progress, bool stats) {
     // Every argument is checked before anything is built or rendered.
     const RenderRequest& request = self.request();
     RenderOptions options;
@@ -121,6 +121,11 @@ py::object render_scene(PyScene& self, const py::object& spp, const py::object& 
     options.sampler = sampler.value_or(request.sampler);
     options.sampler_settings = request.sampler_settings;
     options.spectral = spectral;
+    if (!(adaptive_threshold >= 0 && std::isfinite(adaptive_threshold)))
+        throw py::value_error(
+            fmt::format("adaptive_threshold must be a non-negative number, not {}", adaptive_threshold));
+    options.adaptive.enabled = adaptive || adaptive_threshold > 0;
+    options.adaptive.threshold = adaptive_threshold;
     options.quiet = !progress;
     int depth = max_depth.is_none() ? request.max_depth
                                     : int(whole_number(max_depth, "max_depth", -1, 100000,
@@ -149,6 +154,14 @@ py::object render_scene(PyScene& self, const py::object& spp, const py::object& 
         figures["seed"] = options.seed;
         figures["nonfinite_samples"] = result.nonfinite_samples;
         figures["mode"] = spectral ? "spectral" : "rgb";
+        if (result.adaptive) {
+            py::dict a;
+            a["min_spp"] = result.adaptive->min_spp;
+            a["max_spp"] = result.adaptive->max_spp;
+            a["rounds"] = result.adaptive->rounds;
+            a["level"] = result.adaptive->level;
+            figures["adaptive"] = a;
+        }
     }
     py::array_t<float> image = image_to_array(std::move(result.image));
     if (stats) return py::make_tuple(image, figures);
@@ -187,9 +200,10 @@ void bind_scene(py::module_& m) {
                                     s.request().integrator);
              })
         .def("render", &render_scene, py::kw_only(), py::arg("spp") = py::none(),
-             py::arg("resolution") = py::none(), py::arg("seed") = py::none(), py::arg("threads") = py::none(),
-             py::arg("integrator") = py::none(), py::arg("max_depth") = py::none(),
-             py::arg("sampler") = py::none(), py::arg("spectral") = false, py::arg("time") = py::none(),
+             py::arg("resolution") = py::none(), py::arg("seed") = py::none(),
+             py::arg("threads") = py::none(), py::arg("integrator") = py::none(),
+             py::arg("max_depth") = py::none(), py::arg("sampler") = py::none(), py::arg("spectral") = false,
+             py::arg("time") = py::none(), py::arg("adaptive") = false, py::arg("adaptive_threshold") = 0.0,
              py::arg("progress") = false, py::arg("stats") = false,
              R"(Renders the scene as `illum render` does and returns the linear radiance as a float32 array of
 shape (height, width, 3), which wraps the rendered image's own pixels (no copy). The same arguments give
@@ -202,7 +216,8 @@ else 0); threads: worker threads (None: all cores); integrator: path,
 volpath, bdpt, direct, lightpath, sppm, albedo or normal; max_depth: -1 (unlimited) to 100000; sampler:
 zsobol, sobol, paddedsobol, halton, pmj02bn, stratified or independent; spectral: four sampled
 wavelengths per camera sample instead of RGB; time: render whole passes until this many seconds
-are spent; progress: print progress on stderr; stats: return (image, dict of the render's figures).
+are spent; adaptive: spread the samples over the pixels by their noise (`--adaptive`, docs/adaptive.md);
+adaptive_threshold: also stop pixels whose error level is below it (implies adaptive); progress: print progress on stderr; stats: return (image, dict of the render's figures).
 The GIL is released while the scene renders.)");
 
     m.def(

@@ -61,6 +61,19 @@ def test_stats():
     assert stats["mode"] == "rgb" and stats["rays"] > 0
 
 
+def test_adaptive_identical_to_cli(cli, tmp_path):
+    args = dict(spp=32, seed=5, resolution=(40, 30))
+    cli_pixels = render_cli(cli, tmp_path, "--spp", 32, "--seed", 5, "--resolution", "40x30", "--adaptive")
+    py_pixels, stats = illum.cornell_box().render(adaptive=True, stats=True, **args)
+    assert np.array_equal(py_pixels, cli_pixels)
+    assert not np.array_equal(py_pixels, illum.cornell_box().render(**args))
+    assert stats["samples"] <= 40 * 30 * 32 and stats["adaptive"]["min_spp"] == 16
+    with pytest.raises(ValueError):
+        illum.cornell_box().render(spp=4, adaptive_threshold=-1.0)
+    with pytest.raises(illum.Error):
+        illum.cornell_box().render(spp=4, adaptive=True, integrator="bdpt")
+
+
 def test_render_releases_the_gil():
     # Two renders from two Python threads at once finish, and give what one thread alone gives.
     import threading
