@@ -30,6 +30,7 @@ struct RenderSetup {
     std::uint64_t seed = 0;
     std::string sampler = "sobol";
     bool spectral = false;
+    bool adaptive = false; // adaptive sampling (render/adaptive_sampling.h) with its default settings
 };
 
 // An integrator test's setup: the independent sampler (samples independent of each other, as the tests'
@@ -58,6 +59,7 @@ inline RenderResult render_pbrt(const std::string& text, const RenderSetup& setu
     opt.sampler = setup.sampler;
     opt.quiet = true;
     opt.spectral = setup.spectral;
+    opt.adaptive.enabled = setup.adaptive;
     return render(*scene, *integrator, opt);
 }
 

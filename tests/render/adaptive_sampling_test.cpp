@@ -153,15 +153,12 @@ Shape "trianglemesh" "point3 P" [-3 -3 2  3 -3 2  3 3 2  -3 3 2] "integer indice
 )";
 
 RenderResult render_uneven(int spp, bool adaptive, int threads, std::uint64_t seed = 1) {
-    auto scene = build_scene(parse_pbrt_string(kUnevenScene, "<test>", "."));
-    auto integrator = make_integrator("path", *scene, 3);
-    RenderOptions opt;
-    opt.spp = spp;
-    opt.threads = threads;
-    opt.seed = seed;
-    opt.quiet = true;
-    opt.adaptive.enabled = adaptive;
-    return render(*scene, *integrator, opt);
+    test::RenderSetup setup;
+    setup.spp = spp;
+    setup.threads = threads;
+    setup.seed = seed;
+    setup.adaptive = adaptive;
+    return test::render_pbrt(kUnevenScene, setup);
 }
 
 double mse(const Image& a, const Image& b) {
