@@ -38,7 +38,7 @@ Options:
                        pbrt-v4 at the spp its timed runs predict for the wall time illum's run took)
                        and print the RMSE of each against DIR/refs/spectral/<scene>.exr
   --adaptive           illum's equal-time renders use adaptive sampling (--adaptive) where the scene's
-                       integrator renders pixel by pixel (path, volpath); the others as they are
+                       integrator's samples start in a pixel (path, volpath, bdpt); the others as they are
   --quick              1 run at 4 spp: checks the script, measures nothing
   --out DIR            where images, logs and peers.csv go (default: a new folder under /tmp)
   -h, --help           this text
@@ -350,7 +350,7 @@ echo "- date: $(date -u '+%Y-%m-%d %H:%M UTC'); machine: $(uname -m), $(nproc) c
      "runs: $runs (median of whole processes)${spp_override:+; spp: $spp_override for every scene}"
 echo "- illum: $illum_version ($illum), --spectral"
 [[ -z "$integrator_override" ]] || echo "- every scene with: Integrator $integrator_override"
-[[ $adaptive -eq 0 || -z "$equal_time" ]] || echo "- illum's equal-time renders of path and volpath scenes: --adaptive"
+[[ $adaptive -eq 0 || -z "$equal_time" ]] || echo "- illum's equal-time renders of path, volpath and bdpt scenes: --adaptive"
 [[ -z "$pbrt" ]] || echo "- pbrt-v4: $pbrt_version ($pbrt)"
 [[ -z "$blender" ]] || echo "- Cycles: $blender_version ($blender), CPU"
 echo "- output: $out_dir"
@@ -452,7 +452,7 @@ for scene in $scenes; do
         eq_illum_spp="" eq_illum_s="" eq_illum_rmse="" eq_pbrt_spp="" eq_pbrt_s="" eq_pbrt_rmse=""
         eq_illum_trim="" eq_pbrt_trim=""
         eq_illum_args=()
-        if [[ $adaptive -eq 1 && ( "$integrator" == path || "$integrator" == volpath ) ]]; then
+        if [[ $adaptive -eq 1 && ( "$integrator" == path || "$integrator" == volpath || "$integrator" == bdpt ) ]]; then
             eq_illum_args=(--adaptive)
         fi
         if [[ $illum_ok -eq 1 ]] && timed_run "$folder" "$scene_out/illum-equal-time.log" "$illum" render \

@@ -297,7 +297,7 @@ void add_render_command(CLI::App& app) {
         "--adaptive", args->adaptive,
         "Adaptive sampling: the samples (spp x pixels, or --time) spread over the pixels in rounds, "
         "each pixel taking samples in proportion to the spread of its own and its neighbours' "
-        "samples (which minimises the image's mean squared error); path, volpath, direct and the "
+        "samples (which minimises the image's mean squared error); path, volpath, bdpt, direct and the "
         "debug passes, in one process");
     cmd->add_option("--adaptive-threshold", args->adaptive_threshold,
                     "With adaptive sampling, also stop pixels whose error level e = s / (n m) is below this "

@@ -169,11 +169,35 @@ BDPTIntegrator::BDPTIntegrator(const Scene& scene, int max_depth)
 
 namespace {
 
-// The camera film's image plus the light subpaths' splats (t = 1) after `passes` samples per pixel.
-Image with_splats(Image image, const SplatFilm& splats, int passes) {
-    Image s = splats.resolve(passes);
+// The camera film's image plus the light subpaths' splats (t = 1) after `per_pixel` samples per pixel (each
+// traced one light subpath).
+Image with_splats(Image image, const SplatFilm& splats, double per_pixel) {
+    Image s = splats.resolve(per_pixel);
     for (std::size_t i = 0; i < image.pixel_count(); ++i) image.data()[i] += s.data()[i];
     return image;
+}
+
+// An adaptive round's work: runs of consecutive pixels (row by row) of about kRoundChunkSamples of the
+// round's samples each (a pixel with more is a run of its own), pixels without samples left out.
+constexpr std::uint64_t kRoundChunkSamples = 1024;
+std::vector<std::pair<std::size_t, std::size_t>> round_chunks(const AdaptiveSchedule& s, int w, int h) {
+    std::vector<std::pair<std::size_t, std::size_t>> chunks;
+    const std::size_t pixels = std::size_t(w) * std::size_t(h);
+    std::size_t p0 = pixels;
+    std::uint64_t samples = 0;
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const int x = int(p % std::size_t(w)), y = int(p / std::size_t(w));
+        const std::uint64_t n = std::uint64_t(s.to(x, y) - s.from(x, y));
+        if (n == 0) continue;
+        if (p0 < pixels && samples + n > kRoundChunkSamples) {
+            chunks.push_back({p0, p});
+            p0 = pixels;
+        }
+        if (p0 == pixels) p0 = p, samples = 0;
+        samples += n;
+    }
+    if (p0 < pixels) chunks.push_back({p0, pixels});
+    return chunks;
 }
 
 } // namespace
@@ -297,39 +321,79 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
     Progress progress("render",
                       timed ? 0 : pixels * std::uint64_t(sample_share(options.group).count(options.spp)),
                       "samples", options.quiet);
-    int passes = run_chunked_schedule<ChunkOutput>(
-        options, pixels, arena, progress,
-        [&](ChunkOutput& out, int s, std::size_t p0, std::size_t p1) {
-            ThreadContext& tc = contexts.local();
-            Subpaths& sp = storage.local();
-            out.estimates.clear();
-            out.splats.clear();
-            out.strategy_splats.clear();
-            out.dropped = 0;
-            for (std::size_t p = p0; p < p1; ++p) {
-                int x = int(p % std::size_t(w)), y = int(p / std::size_t(w));
-                tc.sampler.start_pixel_sample({x, y}, s);
-                trace(tc, sp, x, y, out);
-            }
-            tc.arena.reset();
-        },
-        [&](const ChunkOutput& o) {
-            for (const CameraEstimate& e : o.estimates)
-                film.add_sample(int(e.pixel % std::uint32_t(w)), int(e.pixel / std::uint32_t(w)), e.value,
-                                e.weight);
-            for (const Splat& sp : o.splats) splat_film.add_splat(sp);
-            for (const auto& [i, sp] : o.strategy_splats) strategy_films[std::size_t(i)].add_splat(sp);
-            nonfinite += std::uint64_t(o.dropped);
-        },
-        [&](int k) { return with_splats(film.resolve(), splat_film, k); });
-
+    auto clear = [](ChunkOutput& out) {
+        out.estimates.clear();
+        out.splats.clear();
+        out.strategy_splats.clear();
+        out.dropped = 0;
+    };
+    auto apply = [&](const ChunkOutput& o) {
+        for (const CameraEstimate& e : o.estimates)
+            film.add_sample(int(e.pixel % std::uint32_t(w)), int(e.pixel / std::uint32_t(w)), e.value,
+                            e.weight);
+        for (const Splat& sp : o.splats) splat_film.add_splat(sp);
+        for (const auto& [i, sp] : o.strategy_splats) strategy_films[std::size_t(i)].add_splat(sp);
+        nonfinite += std::uint64_t(o.dropped);
+    };
     RenderResult r;
-    for (auto& tc : contexts) r.rays += tc.rays;
-    r.nonfinite_samples = nonfinite;
-    r.spp = sum_over_group(options, passes, film.accumulators(), r);
-    if (options.group) options.group->sum(splat_film.accumulators(), false);
+    double per_pixel = 0; // samples per pixel, each with its light subpath: the splats' normalisation
+    if (options.adaptive.enabled) {
+        // Adaptive sampling: the camera estimates decide where samples go; every sample traces its light
+        // subpath as always, so the splats stay normalised by the samples in all.
+        const AdaptiveSchedule schedule = run_adaptive_rounds(
+            options, PixelBounds::full(w, h), film, progress,
+            [&](const AdaptiveSchedule& s) {
+                const auto chunks = round_chunks(s, w, h);
+                run_waves<ChunkOutput>(
+                    arena, chunks.size(),
+                    [&](ChunkOutput& out, std::size_t k) {
+                        ThreadContext& tc = contexts.local();
+                        Subpaths& sp = storage.local();
+                        clear(out);
+                        std::uint64_t n = 0;
+                        for (std::size_t p = chunks[k].first; p < chunks[k].second; ++p) {
+                            const int x = int(p % std::size_t(w)), y = int(p / std::size_t(w));
+                            for (int i = s.from(x, y), i1 = s.to(x, y); i < i1; ++i, ++n) {
+                                tc.sampler.start_pixel_sample({x, y}, i);
+                                trace(tc, sp, x, y, out);
+                            }
+                        }
+                        tc.arena.reset();
+                        progress.add(n);
+                    },
+                    apply);
+            },
+            [&](const AdaptiveSchedule& s) {
+                return with_splats(film.resolve(), splat_film, double(s.taken()) / double(pixels));
+            });
+        for (auto& tc : contexts) r.rays += tc.rays;
+        r.nonfinite_samples = nonfinite;
+        record_adaptive(schedule, r);
+        per_pixel = double(r.samples) / double(pixels);
+    } else {
+        int passes = run_chunked_schedule<ChunkOutput>(
+            options, pixels, arena, progress,
+            [&](ChunkOutput& out, int s, std::size_t p0, std::size_t p1) {
+                ThreadContext& tc = contexts.local();
+                Subpaths& sp = storage.local();
+                clear(out);
+                for (std::size_t p = p0; p < p1; ++p) {
+                    int x = int(p % std::size_t(w)), y = int(p / std::size_t(w));
+                    tc.sampler.start_pixel_sample({x, y}, s);
+                    trace(tc, sp, x, y, out);
+                }
+                tc.arena.reset();
+            },
+            apply, [&](int k) { return with_splats(film.resolve(), splat_film, k); });
+        for (auto& tc : contexts) r.rays += tc.rays;
+        r.nonfinite_samples = nonfinite;
+        r.spp = sum_over_group(options, passes, film.accumulators(), r);
+        if (options.group) options.group->sum(splat_film.accumulators(), false);
+        r.samples = pixels * std::uint64_t(r.spp);
+        per_pixel = r.spp;
+    }
     r.seconds = progress.elapsed_seconds();
-    r.image = with_splats(film.resolve(), splat_film, r.spp);
+    r.image = with_splats(film.resolve(), splat_film, per_pixel);
     // pbrt-v4's names: bdpt_d<depth>_s<s>_t<t>.exr for t >= 1, less s = 1, t = 1.
     for (int depth = 0; visualize && depth <= max_depth; ++depth)
         for (int s = 0; s <= depth + 2; ++s) {
@@ -338,9 +402,8 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
             SplatFilm& f = strategy_films[std::size_t(strategy_index(s, t))];
             if (options.group) options.group->sum(f.accumulators(), false);
             r.extra_images.push_back(
-                {fmt::format("bdpt_d{:02}_s{:02}_t{:02}.exr", depth, s, t), f.resolve(r.spp)});
+                {fmt::format("bdpt_d{:02}_s{:02}_t{:02}.exr", depth, s, t), f.resolve(per_pixel)});
         }
-    r.samples = pixels * std::uint64_t(r.spp);
     r.threads = threads;
     return r;
 }

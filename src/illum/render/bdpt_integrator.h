@@ -48,6 +48,10 @@ public:
     // illum::Error if the camera has no importance function.
     BDPTIntegrator(const Scene& scene, int max_depth);
     RenderResult render_image(const RenderOptions& options) const override;
+    // Adaptive sampling spreads the camera samples by the noise of the camera strategies' estimates (t >= 2);
+    // each sample traces its light subpath as always, and the splats (t = 1) are normalised by the samples in
+    // all.
+    bool adapts_samples() const override { return true; }
     int max_depth() const { return max_depth_; }
 
 private:

@@ -20,14 +20,10 @@ namespace illum {
 inline constexpr std::size_t kChunkPixels = 1024;
 inline constexpr std::size_t kWaveChunks = 64;
 
-// trace(out, sample, p0, p1) traces pixels [p0, p1) at one (global) sample index into `out` (cleared by
-// it); apply(out) adds an output to the film; snapshot(k) is the image after k passes, for a preview. Runs this process's share of options.spp passes, or whole
-// passes until options.time_budget (run_passes); returns the passes taken. `progress` counts pixel samples.
-template <class Output, class Trace, class Apply, class Snapshot>
-int run_chunked_schedule(const RenderOptions& options, std::size_t pixels, tbb::task_arena& arena,
-                         Progress& progress, Trace&& trace, Apply&& apply, Snapshot&& snapshot) {
-    const std::size_t chunks_per_pass = (pixels + kChunkPixels - 1) / kChunkPixels;
-    const SampleShare share = sample_share(options.group);
+// Runs items [0, n) of a sequence of work in waves of kWaveChunks: trace(out, k) fills item k's output in
+// parallel; apply(out) is called on the outputs in item order by one task, while the next wave is traced.
+template <class Output, class Trace, class Apply>
+void run_waves(tbb::task_arena& arena, std::size_t n, Trace&& trace, Apply&& apply) {
     struct Wave {
         std::vector<Output> outputs = std::vector<Output>(kWaveChunks);
         std::size_t chunks = 0;
@@ -37,31 +33,47 @@ int run_chunked_schedule(const RenderOptions& options, std::size_t pixels, tbb::
         for (std::size_t k = 0; k < wv.chunks; ++k) apply(wv.outputs[k]);
         wv.chunks = 0;
     };
-    // Chunks [g0, g1) of the sequence.
-    auto run = [&](std::size_t g0, std::size_t g1) {
-        int cur = 0;
-        for (std::size_t first = g0; first < g1; first += kWaveChunks, cur = 1 - cur) {
-            Wave& wv = waves[cur];
-            wv.chunks = std::min<std::size_t>(kWaveChunks, g1 - first);
-            arena.execute([&] {
-                tbb::task_group previous;
-                previous.run([&] { apply_wave(waves[1 - cur]); });
-                tbb::parallel_for(std::size_t(0), wv.chunks, [&](std::size_t k) {
-                    std::size_t g = first + k;
-                    std::size_t p0 = (g % chunks_per_pass) * kChunkPixels,
-                                p1 = std::min(pixels, p0 + kChunkPixels);
-                    trace(wv.outputs[k], share.index(int(g / chunks_per_pass)), p0, p1);
-                    progress.add(p1 - p0);
-                });
-                previous.wait();
-            });
-        }
-        apply_wave(waves[1 - cur]);
-    };
+    int cur = 0;
+    for (std::size_t first = 0; first < n; first += kWaveChunks, cur = 1 - cur) {
+        Wave& wv = waves[cur];
+        wv.chunks = std::min<std::size_t>(kWaveChunks, n - first);
+        arena.execute([&] {
+            tbb::task_group previous;
+            previous.run([&] { apply_wave(waves[1 - cur]); });
+            tbb::parallel_for(std::size_t(0), wv.chunks,
+                              [&](std::size_t k) { trace(wv.outputs[k], first + k); });
+            previous.wait();
+        });
+    }
+    apply_wave(waves[1 - cur]);
+}
+
+// trace(out, sample, p0, p1) traces pixels [p0, p1) at one (global) sample index into `out` (cleared by
+// it); apply(out) adds an output to the film; snapshot(k) is the image after k passes, for a preview. Runs
+// this process's share of options.spp passes, or whole passes until options.time_budget (run_passes);
+// returns the passes taken. `progress` counts pixel samples.
+template <class Output, class Trace, class Apply, class Snapshot>
+int run_chunked_schedule(const RenderOptions& options, std::size_t pixels, tbb::task_arena& arena,
+                         Progress& progress, Trace&& trace, Apply&& apply, Snapshot&& snapshot) {
+    const std::size_t chunks_per_pass = (pixels + kChunkPixels - 1) / kChunkPixels;
+    const SampleShare share = sample_share(options.group);
     // This process's passes k0..k1-1 are its chunks [k0 · chunks_per_pass, k1 · chunks_per_pass).
-    int passes = run_passes(options, progress, [&](int k0, int k1) {
-        run(std::size_t(k0) * chunks_per_pass, std::size_t(k1) * chunks_per_pass);
-    }, snapshot);
+    int passes = run_passes(
+        options, progress,
+        [&](int k0, int k1) {
+            const std::size_t g0 = std::size_t(k0) * chunks_per_pass;
+            run_waves<Output>(
+                arena, std::size_t(k1 - k0) * chunks_per_pass,
+                [&](Output& out, std::size_t k) {
+                    const std::size_t g = g0 + k;
+                    const std::size_t p0 = (g % chunks_per_pass) * kChunkPixels,
+                                      p1 = std::min(pixels, p0 + kChunkPixels);
+                    trace(out, share.index(int(g / chunks_per_pass)), p0, p1);
+                    progress.add(p1 - p0);
+                },
+                apply);
+        },
+        snapshot);
     progress.finish();
     return passes;
 }

@@ -107,6 +107,14 @@ Sampler make_sampler(const RenderOptions& options, int spp, Point2i resolution) 
     return Sampler(render_sampler_kind(options), spp, options.seed, settings);
 }
 
+void record_adaptive(const AdaptiveSchedule& schedule, RenderResult& r) {
+    const std::uint64_t pixels = schedule.pixels();
+    r.samples = schedule.taken();
+    r.spp = int((r.samples + pixels / 2) / pixels);
+    r.adaptive = RenderResult::Adaptive{schedule.min_taken(), schedule.max_taken(), schedule.rounds(),
+                                        schedule.level()};
+}
+
 int sum_over_group(const RenderOptions& options, int passes, std::span<double> accumulators,
                    RenderResult& r) {
     RenderGroup* group = options.group;
@@ -122,9 +130,10 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
     const PixelBounds bounds = scene.output_bounds();
     if (auto* whole = dynamic_cast<const WholeImageIntegrator*>(&integrator)) {
         if (options.adaptive.enabled && !whole->adapts_samples())
-            throw Error("adaptive sampling works with the integrators that render pixel by pixel (path, "
-                        "volpath, direct and the debug passes), not with one whose light paths splat over "
-                        "the whole image (lightpath, bdpt, sppm, vcm)");
+            throw Error(
+                "adaptive sampling works with path, volpath, bdpt, direct and the debug passes, whose "
+                "samples start in a pixel, not with lightpath, sppm or vcm, whose light paths or "
+                "iterations serve every pixel at once");
         return cropped(whole->render_image(options), scene);
     }
     // The film covers the full image (a preview shows the kept pixels in place); only the pixels of
@@ -297,39 +306,16 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
         r.nonfinite_samples = nonfinite;
     };
     if (options.adaptive.enabled) {
-        if (options.group)
-            throw Error("adaptive sampling renders in one process: it cannot share its samples with other "
-                        "ranks (mpirun or --share)");
-        AdaptiveSchedule schedule(bounds, options.adaptive);
-        const std::uint64_t budget = pixels * std::uint64_t(std::max(options.spp, 1));
-        for (;;) {
-            // Every round plans for the whole render: spp × pixels samples, or with a time budget those
-            // taken so far and as many as the time left allows at the rate so far.
-            std::uint64_t round_budget = budget;
-            if (timed && schedule.rounds() >= 2) {
-                const double elapsed = progress.elapsed_seconds(), left = options.time_budget - elapsed;
-                if (!(left > 0)) break;
-                round_budget = schedule.taken() + std::uint64_t(double(schedule.taken()) / elapsed * left);
-            } else if (timed) {
-                round_budget = pixels * std::uint64_t(options.adaptive.min_spp);
-            }
-            if (schedule.plan(film, round_budget) == 0) break;
-            render_samples(
-                round_tiles(bounds, schedule), [&](int x, int y) { return schedule.from(x, y); },
-                [&](int x, int y) { return schedule.to(x, y); });
-            schedule.commit();
-            if (timed) progress.set_fraction(progress.elapsed_seconds() / options.time_budget);
-            if (options.preview)
-                options.preview->frame(film.resolve(), int(schedule.taken() / pixels), 0,
-                                       timed ? std::min(1.0, progress.elapsed_seconds() / options.time_budget)
-                                             : double(schedule.taken()) / double(budget));
-        }
-        progress.finish();
+        const AdaptiveSchedule schedule = run_adaptive_rounds(
+            options, bounds, film, progress,
+            [&](const AdaptiveSchedule& s) {
+                render_samples(
+                    round_tiles(bounds, s), [&](int x, int y) { return s.from(x, y); },
+                    [&](int x, int y) { return s.to(x, y); });
+            },
+            [&](const AdaptiveSchedule&) { return film.resolve(); });
         count();
-        r.spp = int((schedule.taken() + pixels / 2) / pixels);
-        r.samples = schedule.taken();
-        r.adaptive = RenderResult::Adaptive{schedule.min_taken(), schedule.max_taken(), schedule.rounds(),
-                                            schedule.level()};
+        record_adaptive(schedule, r);
     } else {
         const int passes = run_passes(options, progress, pass, [&](int) { return film.resolve(); });
         progress.finish();

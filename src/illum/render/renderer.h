@@ -16,6 +16,7 @@
 #include "illum/render/render_group.h"
 #include "illum/render/render_preview.h"
 #include "illum/render/scene.h"
+#include "illum/util/error.h"
 #include "illum/util/progress.h"
 
 namespace illum {
@@ -39,7 +40,8 @@ struct RenderOptions {
     // allow it (renderer.cpp); the image is the same either way (tests compare the two).
     bool camera_packets = true;
     // Samples spread over the pixels by their noise (adaptive_sampling.h): spp × pixels samples in all, or
-    // the time budget; pixel-by-pixel integrators only, in one process.
+    // the time budget; the integrators whose samples start in a pixel (path, volpath, bdpt, direct, the debug
+    // passes), in one process.
     AdaptiveSettings adaptive;
 };
 
@@ -129,6 +131,47 @@ int run_passes(const RenderOptions& options, Progress& progress, Pass&& pass, Sn
     }
     return k;
 }
+
+// Adaptive sampling's rounds (adaptive_sampling.h) on `film`, the film of per-pixel estimates: round(s)
+// renders each pixel's samples [s.from(x, y), s.to(x, y)) into it, snapshot(s) is the image after the
+// rounds so far (s.taken() samples), for a preview. Every round plans for the whole render: options.spp ×
+// pixels samples, or with a time budget those taken so far and as many as the time left allows at the rate so
+// far. One process only.
+template <class Round, class Snapshot>
+AdaptiveSchedule run_adaptive_rounds(const RenderOptions& options, const PixelBounds& bounds,
+                                     const Film& film, Progress& progress, Round&& round,
+                                     Snapshot&& snapshot) {
+    if (options.group)
+        throw Error("adaptive sampling renders in one process: it cannot share its samples with other ranks "
+                    "(mpirun or --share)");
+    AdaptiveSchedule schedule(bounds, options.adaptive);
+    const std::uint64_t pixels = schedule.pixels();
+    const std::uint64_t budget = pixels * std::uint64_t(std::max(options.spp, 1));
+    const bool timed = options.time_budget > 0;
+    for (;;) {
+        std::uint64_t round_budget = budget;
+        if (timed && schedule.rounds() >= 2) {
+            const double elapsed = progress.elapsed_seconds(), left = options.time_budget - elapsed;
+            if (!(left > 0)) break;
+            round_budget = schedule.taken() + std::uint64_t(double(schedule.taken()) / elapsed * left);
+        } else if (timed) {
+            round_budget = pixels * std::uint64_t(options.adaptive.min_spp);
+        }
+        if (schedule.plan(film, round_budget) == 0) break;
+        round(schedule);
+        schedule.commit();
+        const double fraction = timed ? std::min(1.0, progress.elapsed_seconds() / options.time_budget)
+                                      : double(schedule.taken()) / double(budget);
+        if (timed) progress.set_fraction(fraction);
+        if (options.preview)
+            options.preview->frame(snapshot(schedule), int(schedule.taken() / pixels), 0, fraction);
+    }
+    progress.finish();
+    return schedule;
+}
+// A render's figures after adaptive rounds: the mean samples per pixel (rounded), the samples and the
+// rounds' figures.
+void record_adaptive(const AdaptiveSchedule& schedule, RenderResult& r);
 
 // After the passes: sums the film's accumulators and r's counters (rays, dropped samples) over the group
 // onto rank 0, and returns the samples per pixel the whole group took. Without a group, `passes`.
