@@ -169,6 +169,25 @@ double image_mean(const Image& image) {
     return m / double(image.pixel_count());
 }
 
+double sample_variance(const std::vector<double>& v) {
+    const double m = std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
+    double s = 0;
+    for (double d : v) s += (d - m) * (d - m);
+    return s / double(v.size() - 1);
+}
+
+// The mean of `diffs` (image means less a reference's, one per seed) is within 4 standard errors of 0: the
+// standard error from the diffs' spread and the reference's own error, estimated from the spread of
+// `uniform_means` (uniform renders with `times` fewer samples than the reference).
+void expect_same_mean(const std::vector<double>& diffs, const std::vector<double>& uniform_means,
+                      double times) {
+    const double n = double(diffs.size());
+    const double mean = std::accumulate(diffs.begin(), diffs.end(), 0.0) / n;
+    const double standard_error =
+        std::sqrt(sample_variance(diffs) / n + sample_variance(uniform_means) / times);
+    EXPECT_LT(std::abs(mean), 4 * standard_error) << mean << " ± " << standard_error;
+}
+
 double mse(const Image& a, const Image& b) {
     double s = 0;
     for (std::size_t i = 0; i < a.pixel_count(); ++i)
@@ -208,26 +227,10 @@ TEST(AdaptiveRender, LessErrorForTheSameSamplesAndTheSameMean) {
         EXPECT_LE(adaptive.samples, uniform.samples);
         const double ratio = mse(adaptive.image, reference) / mse(uniform.image, reference);
         EXPECT_LT(ratio, 0.1);
-        double ma = 0, mu = 0, mu_u = 0;
-        for (std::size_t i = 0; i < reference.pixel_count(); ++i) {
-            ma += adaptive.image.data()[i].average();
-            mu_u += uniform.image.data()[i].average();
-            mu += reference.data()[i].average();
-        }
-        diffs.push_back((ma - mu) / double(reference.pixel_count()));
-        uniform_means.push_back(mu_u / double(reference.pixel_count()));
+        diffs.push_back(image_mean(adaptive.image) - image_mean(reference));
+        uniform_means.push_back(image_mean(uniform.image));
     }
-    auto sample_variance = [](const std::vector<double>& v) {
-        const double m = std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
-        double s = 0;
-        for (double d : v) s += (d - m) * (d - m);
-        return s / double(v.size() - 1);
-    };
-    const double mean = std::accumulate(diffs.begin(), diffs.end(), 0.0) / 4;
-    // The standard error of the mean difference: the adaptive renders' spread over the four seeds, and the
-    // reference's own error, which has 64 times the samples of one uniform render.
-    const double standard_error = std::sqrt(sample_variance(diffs) / 4 + sample_variance(uniform_means) / 64);
-    EXPECT_LT(std::abs(mean), 4 * standard_error) << mean << " ± " << standard_error;
+    expect_same_mean(diffs, uniform_means, 64);
 }
 
 // BDPT: the camera strategies' estimates decide where samples go, every sample traces its light subpath, and
@@ -249,16 +252,7 @@ TEST(AdaptiveRender, BdptKeepsItsSplatsNormalised) {
             diffs.push_back(image_mean(render_seed(seed).image) - reference);
             uniform.push_back(image_mean(render_uneven(32, false, 0, seed, "bdpt").image));
         }
-        auto sample_variance = [](const std::vector<double>& v) {
-            const double m = std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
-            double s = 0;
-            for (double d : v) s += (d - m) * (d - m);
-            return s / double(v.size() - 1);
-        };
-        const double mean = std::accumulate(diffs.begin(), diffs.end(), 0.0) / 4;
-        const double standard_error = std::sqrt(sample_variance(diffs) / 4 + sample_variance(uniform) / 16);
-        EXPECT_LT(std::abs(mean), 4 * standard_error)
-            << mean << " ± " << standard_error << " of " << reference;
+        expect_same_mean(diffs, uniform, 16);
     };
     check([](std::uint64_t seed) { return render_uneven(32, true, 0, seed, "bdpt"); });
     check([](std::uint64_t seed) {
