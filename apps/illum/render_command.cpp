@@ -48,7 +48,7 @@ struct RenderArgs {
     double serve_linger = 0;
     bool adaptive = false;
     double adaptive_threshold = 0;
-    int adaptive_min_spp = 16;
+    std::optional<int> adaptive_min_spp; // none: AdaptiveSettings' default
 };
 
 void check_output_folder_only(const std::string& path) {
@@ -185,9 +185,9 @@ Prepared prepare(const RenderArgs& args, bool lead, bool quiet) {
     p.options.sampler_settings = p.scene->request.sampler_settings;
     p.options.quiet = quiet;
     p.options.spectral = args.spectral;
-    p.options.adaptive.enabled = args.adaptive || args.adaptive_threshold > 0;
+    p.options.adaptive.enabled = args.adaptive || args.adaptive_threshold > 0 || args.adaptive_min_spp;
     p.options.adaptive.threshold = args.adaptive_threshold;
-    p.options.adaptive.min_spp = args.adaptive_min_spp;
+    if (args.adaptive_min_spp) p.options.adaptive.min_spp = *args.adaptive_min_spp;
     p.write_options.exposure_stops = args.exposure;
     p.write_options.tonemap = *tonemap;
     // EXR output as pbrt-v4 writes its film: half precision unless the film says "savefp16" false (also for
@@ -307,7 +307,7 @@ void add_render_command(CLI::App& app) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--adaptive-min-spp", args->adaptive_min_spp,
                     "With adaptive sampling, the samples every pixel takes first: a power of two, at least 2 "
-                    "(default 16)")
+                    "(default 16); implies --adaptive")
         ->check(positive_integer())
         ->check(CLI::Validator(
             [](const std::string& v) {

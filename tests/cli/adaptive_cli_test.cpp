@@ -28,7 +28,21 @@ TEST(AdaptiveCli, RendersWithinTheBudgetAndReportsItsRounds) {
     ASSERT_EQ(t.exit_code, 0) << t.err;
     auto ts = nlohmann::json::parse(read_bytes(dir / "t.json"));
     EXPECT_EQ(ts["samples"].get<long long>(), 48LL * 32 * 16);
-    EXPECT_EQ(ts["adaptive"]["rounds"], 3); // two that rendered, one that found nothing to add
+    EXPECT_EQ(ts["adaptive"]["rounds"], 2);
+    // --adaptive-min-spp implies --adaptive, and sets the first rounds' samples.
+    CliRun m =
+        illum("render --resolution 48x32 --spp 64 --adaptive-min-spp 4 --adaptive-threshold 1000 -o m.exr "
+              "--stats m.json --quiet",
+              dir);
+    ASSERT_EQ(m.exit_code, 0) << m.err;
+    EXPECT_EQ(nlohmann::json::parse(read_bytes(dir / "m.json"))["samples"].get<long long>(), 48LL * 32 * 4);
+    // With a time budget the rounds go on until it is spent.
+    CliRun u = illum("render --resolution 48x32 --time 0.5 --adaptive -o u.exr --stats u.json --quiet", dir);
+    ASSERT_EQ(u.exit_code, 0) << u.err;
+    auto us = nlohmann::json::parse(read_bytes(dir / "u.json"));
+    EXPECT_GE(us["adaptive"]["rounds"].get<int>(), 3);
+    EXPECT_GE(us["seconds"].get<double>(), 0.5);
+    EXPECT_GT(us["samples"].get<long long>(), 48LL * 32 * 16);
     fs::remove_all(dir);
 }
 

@@ -103,16 +103,21 @@ std::uint64_t AdaptiveSchedule::double_pixels(const Film& film, const std::vecto
 }
 
 std::uint64_t AdaptiveSchedule::plan(const Film& film, std::uint64_t budget) {
+    const std::uint64_t added = plan_round(film, budget);
+    if (added > 0) ++rounds_;
+    return added;
+}
+
+std::uint64_t AdaptiveSchedule::plan_round(const Film& film, std::uint64_t budget) {
     const std::size_t pixels = taken_.size();
     const std::uint64_t taken_now = taken();
-    ++rounds_;
-    if (rounds_ == 1) {
+    if (rounds_ == 0) {
         const std::uint32_t first = std::min(std::uint32_t(settings_.min_spp / 2),
                                              power_of_two_floor(double(budget) / double(pixels)));
         std::fill(target_.begin(), target_.end(), first);
         return std::uint64_t(first) * pixels;
     }
-    if (rounds_ == 2) { // every pixel to min_spp: its two halves
+    if (rounds_ == 1) { // every pixel to min_spp: its two halves
         if (2 * taken_now > budget) return 0;
         return double_pixels(film, std::vector<char>(pixels, 1));
     }

@@ -57,7 +57,8 @@ public:
 
     // Plans the next round for a render of `budget` samples in all (the target of every round, not of this
     // one). Returns the samples the round adds: 0 when no pixel is to grow (below the threshold, or the
-    // budget is spent). The film must hold exactly the samples of the rounds before.
+    // budget is spent), and then the round is not counted and may be planned again with another budget.
+    // The film must hold exactly the samples of the rounds before.
     std::uint64_t plan(const Film& film, std::uint64_t budget);
     // The round's samples of pixel (x, y) (full-image raster, inside the bounds): [from, to).
     int from(int x, int y) const { return int(taken_[index(x, y)]); }
@@ -67,6 +68,7 @@ public:
 
     std::uint64_t taken() const;
     std::size_t pixels() const { return taken_.size(); }
+    // The rounds planned with samples to add.
     int rounds() const { return rounds_; }
     // λ / m̄ of the last round that planned by the estimates: its error level (0 before).
     double level() const { return level_; }
@@ -77,6 +79,7 @@ private:
     std::size_t index(int x, int y) const {
         return std::size_t(y - bounds_.y0) * std::size_t(bounds_.width()) + std::size_t(x - bounds_.x0);
     }
+    std::uint64_t plan_round(const Film& film, std::uint64_t budget);
     // s̃ of every pixel (above).
     std::vector<double> smoothed_deviation(const Film& film) const;
     // Every pixel with grow[i] doubles; its sums so far become its first half.

@@ -149,15 +149,20 @@ AdaptiveSchedule run_adaptive_rounds(const RenderOptions& options, const PixelBo
     const std::uint64_t budget = pixels * std::uint64_t(std::max(options.spp, 1));
     const bool timed = options.time_budget > 0;
     for (;;) {
-        std::uint64_t round_budget = budget;
+        std::uint64_t added = 0;
         if (timed && schedule.rounds() >= 2) {
             const double elapsed = progress.elapsed_seconds(), left = options.time_budget - elapsed;
             if (!(left > 0)) break;
-            round_budget = schedule.taken() + std::uint64_t(double(schedule.taken()) / elapsed * left);
-        } else if (timed) {
-            round_budget = pixels * std::uint64_t(options.adaptive.min_spp);
+            // As many samples as the time left allows at the rate so far; if that makes no pixel double, the
+            // least larger budget that does (up to twice the samples so far), so that the rounds go on until
+            // the time is spent as run_passes' passes do.
+            const std::uint64_t taken = schedule.taken();
+            std::uint64_t extra = std::max(pixels, std::uint64_t(double(taken) / elapsed * left));
+            while ((added = schedule.plan(film, taken + extra)) == 0 && extra < taken) extra *= 2;
+        } else {
+            added = schedule.plan(film, timed ? pixels * std::uint64_t(options.adaptive.min_spp) : budget);
         }
-        if (schedule.plan(film, round_budget) == 0) break;
+        if (added == 0) break;
         round(schedule);
         schedule.commit();
         const double fraction = timed ? std::min(1.0, progress.elapsed_seconds() / options.time_budget)
