@@ -279,6 +279,13 @@ TEST(AdaptiveRender, RefusedWhereItDoesNotApply) {
         auto integrator = make_integrator(name, *scene, 3);
         EXPECT_THROW(render(*scene, *integrator, opt), Error) << name;
     }
+    // BDPT's strategy images are normalised by a number of samples every pixel shares.
+    std::string visualize = kUnevenScene;
+    visualize.replace(visualize.find("Integrator \"path\""), 17,
+                      "Integrator \"bdpt\" \"bool visualizestrategies\" true");
+    auto visualizing = build_scene(parse_pbrt_string(visualize, "<test>", "."));
+    auto bdpt = make_integrator("bdpt", *visualizing, 3);
+    EXPECT_THROW(render(*visualizing, *bdpt, opt), Error);
     auto path = make_integrator("path", *scene, 3);
     SoloShare share(0, 2);
     opt.group = &share;

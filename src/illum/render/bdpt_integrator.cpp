@@ -229,6 +229,11 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
     const int max_depth = max_depth_;
     const bool visualize_weights = scene_.request.bdpt_visualize_weights;
     const bool visualize = visualize_weights || scene_.request.bdpt_visualize_strategies;
+    // The strategy images splat every strategy, the camera's too, normalised by the samples per pixel: they
+    // need every pixel to take the same number.
+    if (visualize && options.adaptive.enabled)
+        throw Error("bdpt's visualizestrategies and visualizeweights images need the same samples in every "
+                    "pixel: they cannot be combined with adaptive sampling");
     // One splat film per strategy image (pbrt-v4's weightFilms), for depths 0..maxdepth.
     std::vector<SplatFilm> strategy_films;
     if (visualize)
