@@ -175,6 +175,7 @@ struct Case {
     std::string integrator, sampler;
     int spp;
     bool spectral;
+    bool adaptive = false; // a different number of samples in each pixel (render/adaptive_sampling.h)
 };
 
 Image render_with(const Scene& scene, const Case& s, bool packets, int threads = 2) {
@@ -186,6 +187,7 @@ Image render_with(const Scene& scene, const Case& s, bool packets, int threads =
     o.threads = threads;
     o.quiet = true;
     o.camera_packets = packets;
+    o.adaptive.enabled = s.adaptive;
     return render(scene, *integrator, o).image;
 }
 
@@ -221,6 +223,9 @@ TEST(CameraPackets, ImagesAreTheSameWithAndWithoutPackets) {
         {"path", "pmj02bn", 4, true},
         {"path", "stratified", 6, false},
         {"path", "paddedsobol", 3, true},
+        // Adaptive sampling: packets of a row's samples, pixel by pixel, whatever each pixel takes.
+        {"path", "sobol", 32, false, true},
+        {"path", "zsobol", 32, true, true},
     };
     for (const Case& s : setups) {
         SCOPED_TRACE(s.integrator + " " + s.sampler + " " + std::to_string(s.spp));
