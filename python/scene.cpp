@@ -216,9 +216,10 @@ else 0); threads: worker threads (None: all cores); integrator: path,
 volpath, bdpt, direct, lightpath, sppm, albedo or normal; max_depth: -1 (unlimited) to 100000; sampler:
 zsobol, sobol, paddedsobol, halton, pmj02bn, stratified or independent; spectral: four sampled
 wavelengths per camera sample instead of RGB; time: render whole passes until this many seconds
-are spent; adaptive: spread the samples over the pixels by their noise (`--adaptive`, docs/adaptive.md; path,
-volpath, bdpt, direct);
-adaptive_threshold: also stop pixels whose error level is below it (implies adaptive); progress: print progress on stderr; stats: return (image, dict of the render's figures).
+are spent; adaptive: spread the samples over the pixels by their noise (`--adaptive`,
+docs/adaptive.md; path, volpath, bdpt, direct); adaptive_threshold: also stop pixels whose error level
+is below it (implies adaptive); progress: print progress on stderr; stats: return (image, dict of the
+render's figures).
 The GIL is released while the scene renders.)");
 
     m.def(
