@@ -87,6 +87,27 @@ std::vector<double> AdaptiveSchedule::smoothed_deviation(const Film& film) const
     return v;
 }
 
+std::vector<AdaptiveSchedule::Run> AdaptiveSchedule::round_runs(std::uint64_t max_samples) const {
+    std::vector<Run> runs;
+    for (int y = bounds_.y0; y < bounds_.y1; ++y) {
+        int x0 = -1, x1 = -1;
+        std::uint64_t samples = 0;
+        for (int x = bounds_.x0; x < bounds_.x1; ++x) {
+            const std::uint64_t n = std::uint64_t(to(x, y) - from(x, y));
+            if (n == 0) continue;
+            if (x0 >= 0 && samples + n > max_samples) {
+                runs.push_back({y, x0, x1});
+                x0 = -1;
+            }
+            if (x0 < 0) x0 = x, samples = 0;
+            samples += n;
+            x1 = x + 1;
+        }
+        if (x0 >= 0) runs.push_back({y, x0, x1});
+    }
+    return runs;
+}
+
 std::uint64_t AdaptiveSchedule::double_pixels(const Film& film, const std::vector<char>& grow) {
     const int w = bounds_.width();
     std::uint64_t added = 0;

@@ -65,6 +65,14 @@ public:
     int to(int x, int y) const { return int(target_[index(x, y)]); }
     // After the round: its samples are taken.
     void commit() { taken_ = target_; }
+    // The round's work split for the threads: runs of pixels along each row, [x0, x1) in row y, each holding
+    // about `max_samples` of the round's samples (a pixel with more is a run of its own), so that the
+    // threads finish the round together although a few pixels take most of its samples. Pixels without
+    // samples in the round are left out at the runs' ends.
+    struct Run {
+        int y, x0, x1;
+    };
+    std::vector<Run> round_runs(std::uint64_t max_samples) const;
 
     std::uint64_t taken() const;
     std::size_t pixels() const { return taken_.size(); }

@@ -177,29 +177,6 @@ Image with_splats(Image image, const SplatFilm& splats, double per_pixel) {
     return image;
 }
 
-// An adaptive round's work: runs of consecutive pixels (row by row) of about kRoundChunkSamples of the
-// round's samples each (a pixel with more is a run of its own), pixels without samples left out.
-constexpr std::uint64_t kRoundChunkSamples = 1024;
-std::vector<std::pair<std::size_t, std::size_t>> round_chunks(const AdaptiveSchedule& s, int w, int h) {
-    std::vector<std::pair<std::size_t, std::size_t>> chunks;
-    const std::size_t pixels = std::size_t(w) * std::size_t(h);
-    std::size_t p0 = pixels;
-    std::uint64_t samples = 0;
-    for (std::size_t p = 0; p < pixels; ++p) {
-        const int x = int(p % std::size_t(w)), y = int(p / std::size_t(w));
-        const std::uint64_t n = std::uint64_t(s.to(x, y) - s.from(x, y));
-        if (n == 0) continue;
-        if (p0 < pixels && samples + n > kRoundChunkSamples) {
-            chunks.push_back({p0, p});
-            p0 = pixels;
-        }
-        if (p0 == pixels) p0 = p, samples = 0;
-        samples += n;
-    }
-    if (p0 < pixels) chunks.push_back({p0, pixels});
-    return chunks;
-}
-
 } // namespace
 
 RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
@@ -348,16 +325,16 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         const AdaptiveSchedule schedule = run_adaptive_rounds(
             options, PixelBounds::full(w, h), film, progress,
             [&](const AdaptiveSchedule& s) {
-                const auto chunks = round_chunks(s, w, h);
+                const auto runs = s.round_runs(kAdaptiveWorkSamples);
                 run_waves<ChunkOutput>(
-                    arena, chunks.size(),
+                    arena, runs.size(),
                     [&](ChunkOutput& out, std::size_t k) {
                         ThreadContext& tc = contexts.local();
                         Subpaths& sp = storage.local();
                         clear(out);
                         std::uint64_t n = 0;
-                        for (std::size_t p = chunks[k].first; p < chunks[k].second; ++p) {
-                            const int x = int(p % std::size_t(w)), y = int(p / std::size_t(w));
+                        const int y = runs[k].y;
+                        for (int x = runs[k].x0; x < runs[k].x1; ++x) {
                             for (int i = s.from(x, y), i1 = s.to(x, y); i < i1; ++i, ++n) {
                                 tc.sampler.start_pixel_sample({x, y}, i);
                                 trace(tc, sp, x, y, out);

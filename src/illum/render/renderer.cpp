@@ -47,27 +47,11 @@ std::vector<Tile> make_tiles(const PixelBounds& b, int size) {
     return tiles;
 }
 
-// An adaptive round's work: runs of pixels along each row, each of about kRoundTileSamples of the round's
-// samples (a pixel with more is a tile of its own), so that the threads finish the round together although
-// a few pixels take most of its samples.
-constexpr std::uint64_t kRoundTileSamples = 1024;
-std::vector<Tile> round_tiles(const PixelBounds& b, const AdaptiveSchedule& schedule) {
+// An adaptive round's work: its runs of pixels (AdaptiveSchedule::round_runs) as tiles one row high.
+std::vector<Tile> round_tiles(const AdaptiveSchedule& schedule) {
     std::vector<Tile> tiles;
-    for (int y = b.y0; y < b.y1; ++y) {
-        int x0 = -1;
-        std::uint64_t samples = 0;
-        for (int x = b.x0; x < b.x1; ++x) {
-            const std::uint64_t n = std::uint64_t(schedule.to(x, y) - schedule.from(x, y));
-            if (n == 0) continue;
-            if (x0 >= 0 && samples + n > kRoundTileSamples) {
-                tiles.push_back({x0, y, x, y + 1});
-                x0 = -1;
-            }
-            if (x0 < 0) x0 = x, samples = 0;
-            samples += n;
-        }
-        if (x0 >= 0) tiles.push_back({x0, y, b.x1, y + 1});
-    }
+    for (const AdaptiveSchedule::Run& run : schedule.round_runs(kAdaptiveWorkSamples))
+        tiles.push_back({run.x0, run.y, run.x1, run.y + 1});
     return tiles;
 }
 
@@ -310,7 +294,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
             options, bounds, film, progress,
             [&](const AdaptiveSchedule& s) {
                 render_samples(
-                    round_tiles(bounds, s), [&](int x, int y) { return s.from(x, y); },
+                    round_tiles(s), [&](int x, int y) { return s.from(x, y); },
                     [&](int x, int y) { return s.to(x, y); });
             },
             [&](const AdaptiveSchedule&) { return film.resolve(); });

@@ -132,6 +132,9 @@ int run_passes(const RenderOptions& options, Progress& progress, Pass&& pass, Sn
     return k;
 }
 
+// The samples of an adaptive round's unit of work (AdaptiveSchedule::round_runs).
+inline constexpr std::uint64_t kAdaptiveWorkSamples = 1024;
+
 // Adaptive sampling's rounds (adaptive_sampling.h) on `film`, the film of per-pixel estimates: round(s)
 // renders each pixel's samples [s.from(x, y), s.to(x, y)) into it, snapshot(s) is the image after the
 // rounds so far (s.taken() samples), for a preview. Every round plans for the whole render: options.spp ×
