@@ -37,11 +37,10 @@ Options:
   --equal-time S       also render each scene for about S seconds with each renderer (illum --time S;
                        pbrt-v4 at the spp its timed runs predict for the wall time illum's run took)
                        and print the RMSE of each against DIR/refs/spectral/<scene>.exr. pbrt-v4
-                       renders twice, with seeds 1 and 2: the references are its renders with its
-                       default seed 0, whose first samples in every pixel a seed-0 render repeats (its
-                       error against the reference then comes out low). For path, volpath and bdpt the
-                       two runs also measure the reference's own noise, and the errors are given
-                       against the converged image as well (see below)
+                       renders twice, with seeds 1 and 2, and its RMSE is the root mean square of the
+                       two: the references are its renders with its default seed 0, whose first
+                       samples in every pixel a seed-0 render would repeat (its error against the
+                       reference then comes out low)
   --adaptive           illum's equal-time renders use adaptive sampling (--adaptive) where the scene's
                        integrator's samples start in a pixel (path, volpath, bdpt); the others as they are
   --quick              1 run at 4 spp: checks the script, measures nothing
@@ -370,9 +369,7 @@ columns=(scene resolution spp illum_s illum_rss_mib illum_msamples_per_s pbrt_s 
          pbrt_msamples_per_s pbrt_over_illum)
 if [[ -n "$equal_time" ]]; then
     columns+=(equal_time_s illum_eq_spp illum_eq_s illum_eq_rmse pbrt_eq_spp pbrt_eq_s pbrt_eq_rmse
-              rmse_pbrt_over_illum illum_eq_rmse_trimmed pbrt_eq_rmse_trimmed rmse_trimmed_pbrt_over_illum
-              reference_noise_rmse illum_eq_rmse_converged pbrt_eq_rmse_converged
-              rmse_converged_pbrt_over_illum)
+              rmse_pbrt_over_illum illum_eq_rmse_trimmed pbrt_eq_rmse_trimmed rmse_trimmed_pbrt_over_illum)
 fi
 (IFS=,; echo "${columns[*]}") >"$csv"
 
@@ -380,8 +377,7 @@ titles=("scene" "resolution" "spp" "illum s" "illum RSS MiB" "illum Msamples/s" 
         "pbrt Msamples/s" "pbrt/illum")
 if [[ -n "$equal_time" ]]; then
     titles+=("equal time s" "illum spp" "illum s" "illum RMSE" "pbrt spp" "pbrt s" "pbrt RMSE"
-             "RMSE pbrt/illum" "illum RMSE trimmed" "pbrt RMSE trimmed" "trimmed pbrt/illum"
-             "reference's noise" "illum vs converged" "pbrt vs converged" "converged pbrt/illum")
+             "RMSE pbrt/illum" "illum RMSE trimmed" "pbrt RMSE trimmed" "trimmed pbrt/illum")
 fi
 cycles_columns=(scene resolution spp illum_rgb_s illum_rgb_render_s illum_rgb_rss_mib cycles_s cycles_render_s
                 cycles_rss_mib cycles_over_illum cycles_over_illum_render)
@@ -473,7 +469,10 @@ for scene in $scenes; do
                     <<<"$(rmse_against "$scene_out/illum-equal-time.exr" "$reference")"
         fi
         # pbrt-v4 renders twice, with seeds 1 and 2 (the references are its renders with seed 0; see the
-        # usage text). Its RMSE is the root mean square of the two runs' (plain and trimmed alike).
+        # usage text). Its RMSE is the root mean square of the two runs' (plain and trimmed alike). No seed
+        # changes the pixel positions of pbrt-v4's "sobol" sampler (SobolSampler::GetPixel2D takes them
+        # unscrambled), so with it the two runs and the reference still share those, and part of the
+        # antialiasing error of pbrt's image cancels against the reference's.
         eq_pbrt_e=() eq_pbrt_t=()
         if [[ $pbrt_ok -eq 1 ]]; then
             eq_pbrt_spp="$(awk -v spp="$spp" -v s="${eq_illum_s:-$equal_time}" -v t="$pbrt_s" \
@@ -490,36 +489,12 @@ for scene in $scenes; do
             eq_pbrt_rmse="$(calc 'sqrt((a1 * a1 + a2 * a2) / 2)' "${eq_pbrt_e[1]:-}" "${eq_pbrt_e[2]:-}")"
             eq_pbrt_trim="$(calc 'sqrt((a1 * a1 + a2 * a2) / 2)' "${eq_pbrt_t[1]:-}" "${eq_pbrt_t[2]:-}")"
         fi
-        # Against the converged image. The reference is a render too: its own noise adds to every error
-        # measured against it, pbrt-v4's and illum's alike, and hides the difference between them. With
-        # v_p pbrt's variance (per pixel and channel, averaged), v_r the reference's and e_k the RMSE of
-        # pbrt's run k against the reference, independent unbiased renders give E[e_k^2] = v_p + v_r and
-        # E[d^2] = 2 v_p for the RMSE d between the two runs: so v_r = (e_1^2 + e_2^2)/2 - d^2/2, pbrt's
-        # error against the converged image is d / sqrt 2, and illum's is sqrt(e_illum^2 - v_r) (which
-        # keeps any bias of illum's against pbrt-v4). Only for the unbiased integrators: SPPM's bias is
-        # the same in both runs, so d would leave it out of pbrt's error.
-        eq_noise="" eq_illum_conv="" eq_pbrt_conv="" eq_conv_ratio=""
-        if [[ -n "$eq_pbrt_rmse" && ( "$integrator" == path || "$integrator" == volpath ||
-              "$integrator" == bdpt ) ]]; then
-            d12="$(rmse_against "$scene_out/pbrt-equal-time-1.exr" "$scene_out/pbrt-equal-time-2.exr")"
-            d12="${d12%% *}"
-            v_ref="$(calc 'a1 * a1 - a2 * a2 / 2' "$eq_pbrt_rmse" "$d12")"
-            eq_noise="$(calc 'a1 > 0 ? sqrt(a1) : 0' "$v_ref")"
-            eq_pbrt_conv="$(calc 'a1 / sqrt(2)' "$d12")"
-            eq_illum_conv="$(calc 'a1 * a1 > a2 ? sqrt(a1 * a1 - a2) : 0' "$eq_illum_rmse" "$v_ref")"
-            # Without a ratio when illum's error is within the reference's noise.
-            eq_conv_ratio="$(calc 'a2 > 0 ? a1 / a2 : -1' "$eq_pbrt_conv" "$eq_illum_conv")"
-            eq_conv_ratio="$(fmt %.2f "$eq_conv_ratio")"
-            [[ "$eq_conv_ratio" != -1.00 ]] || eq_conv_ratio="illum within the reference's noise"
-        fi
         [[ -f "$reference" ]] || echo "compare_peers.sh: no reference $reference: no RMSE for $scene" >&2
         row+=("$equal_time" "$eq_illum_spp" "$(fmt %.2f "$eq_illum_s")" "$(fmt %.5g "$eq_illum_rmse")"
               "$eq_pbrt_spp" "$(fmt %.2f "$eq_pbrt_s")" "$(fmt %.5g "$eq_pbrt_rmse")"
               "$(fmt %.2f "$(calc 'a1 / a2' "$eq_pbrt_rmse" "$eq_illum_rmse")")"
               "$(fmt %.5g "$eq_illum_trim")" "$(fmt %.5g "$eq_pbrt_trim")"
-              "$(fmt %.2f "$(calc 'a1 / a2' "$eq_pbrt_trim" "$eq_illum_trim")")"
-              "$(fmt %.5g "$eq_noise")" "$(fmt %.5g "$eq_illum_conv")" "$(fmt %.5g "$eq_pbrt_conv")"
-              "$eq_conv_ratio")
+              "$(fmt %.2f "$(calc 'a1 / a2' "$eq_pbrt_trim" "$eq_illum_trim")")")
     fi
     rows+=("$(join_cells "${row[@]}")")
     (IFS=,; echo "${row[*]}") >>"$csv"
@@ -593,10 +568,7 @@ if [[ -n "$equal_time" ]]; then
     echo "Equal time: RMSE over all pixels and channels against refs/spectral/<scene>.exr;" \
          "RMSE pbrt/illum above 1: illum's image is closer at equal time. Trimmed: the same without the" \
          "0.1% of each image's pixels with the largest errors (illum diff --trim; fireflies)." \
-         "pbrt-v4 renders with seeds 1 and 2 (its RMSE: the root mean square of the two runs')." \
-         "Converged (path, volpath, bdpt): the reference's own noise, sqrt(v_r) with v_r =" \
-         "(e_1^2 + e_2^2)/2 - d^2/2 from pbrt's two runs (e_k against the reference, d between them)," \
-         "taken out: pbrt's error d/sqrt(2), illum's sqrt(e^2 - v_r)."
+         "pbrt-v4 renders with seeds 1 and 2 (its RMSE: the root mean square of the two runs')."
 fi
 
 if [[ -n "$cycles_row" ]]; then
