@@ -4,16 +4,7 @@
 # is the root mean square of the two runs'. pbrt-v4 is stood in for by illum behind pbrt-v4's command
 # line; the reference is an illum render of a tiny scene of the test's own.
 # Usage: compare_peers_equal_time_test.sh ILLUM REPO
-set -euo pipefail
-illum="$1"
-repo="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-
-fail() {
-    echo "FAIL: $*" >&2
-    exit 1
-}
+source "$(dirname "${BASH_SOURCE[0]}")/test_setup.sh"
 
 # pbrt-v4's command line (--nthreads N --spp S [--seed K] --quiet --outfile F SCENE), rendered by illum.
 cat >"$tmp/fake-pbrt" <<SH

@@ -4,16 +4,7 @@
 # indented parameter lines) is replaced, or added before WorldBegin where the file has none; the shared
 # folder is left as it was. Runs illum alone on two tiny scenes of its own (no peers, no ../shared).
 # Usage: compare_peers_integrator_test.sh ILLUM REPO
-set -euo pipefail
-illum="$1"
-repo="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-
-fail() {
-    echo "FAIL: $*" >&2
-    exit 1
-}
+source "$(dirname "${BASH_SOURCE[0]}")/test_setup.sh"
 
 scene_body='
 Camera "perspective" "float fov" [ 40 ]
