@@ -471,8 +471,7 @@ for scene in $scenes; do
         # pbrt-v4 renders twice, with seeds 1 and 2 (the references are its renders with seed 0; see the
         # usage text). Its RMSE is the root mean square of the two runs' (plain and trimmed alike). No seed
         # changes the pixel positions of pbrt-v4's "sobol" sampler (SobolSampler::GetPixel2D takes them
-        # unscrambled), so with it the two runs and the reference still share those, and part of the
-        # antialiasing error of pbrt's image cancels against the reference's.
+        # unscrambled): with it both runs sample the reference's first film positions in every pixel.
         eq_pbrt_e=() eq_pbrt_t=()
         if [[ $pbrt_ok -eq 1 ]]; then
             eq_pbrt_spp="$(awk -v spp="$spp" -v s="${eq_illum_s:-$equal_time}" -v t="$pbrt_s" \
