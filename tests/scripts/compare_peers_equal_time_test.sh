@@ -63,8 +63,10 @@ row = next(csv.DictReader(open(out + "/peers.csv")))
 e = [json.load(open(f"{out}/box/pbrt-equal-time-{k}.exr.diff.json"))["rmse"]["all"] for k in (1, 2)]
 expected = math.sqrt((e[0] ** 2 + e[1] ** 2) / 2)
 print(f"pbrt runs {e[0]:.6g} {e[1]:.6g}: {row['pbrt_eq_rmse']} (expected {expected:.6g})")
-# Both runs count: the figure lies strictly between them (the CSV has 5 significant digits).
+# Both runs count: the figure lies strictly between them, where they differ by more than the CSV's 5
+# significant digits can tell (they differ by a few per cent).
 value = float(row["pbrt_eq_rmse"])
-sys.exit(not (abs(value - expected) <= 1e-4 * expected and min(e) < value < max(e)))
+between = abs(e[0] - e[1]) <= 1e-3 * expected or min(e) < value < max(e)
+sys.exit(not (abs(value - expected) <= 1e-4 * expected and between))
 PY
 echo "compare_peers.sh --equal-time: ok"
