@@ -9,6 +9,13 @@ packages=(build-essential cmake pkg-config libembree-dev libtbb-dev libopenexr-d
           nlohmann-json3-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev clang
           libclang-rt-dev llvm libnanovdb-dev libopenmpi-dev openmpi-bin libcpp-httplib-dev chromium pybind11-dev
           python3-dev python3-numpy python3-pytest)
+# --peers: also Debian's Blender, whose Cycles scripts/compare_peers.sh --blender times against illum (not
+# needed to build, test or render).
+case "${1:-}" in
+    "") ;;
+    --peers) packages+=(blender) ;;
+    *) echo "usage: scripts/setup.sh [--peers]" >&2; exit 2 ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
