@@ -15,6 +15,7 @@
 #include "illum/medium/sample_majorant.h"
 #include "illum/render/chunked_schedule.h"
 #include "illum/render/direct_view_mis.h"
+#include "illum/render/path_vertex.h"
 #include "illum/render/render_arena.h"
 #include "illum/render/shadow_transmittance.h"
 #include "illum/render/texture_footprint.h"
@@ -22,20 +23,6 @@
 #include "illum/util/progress.h"
 
 namespace illum {
-
-namespace {
-
-// Veach 1997 §5.3 (eq. 5.19): with shading normals the BSDF is not symmetric, and the adjoint BSDF that
-// importance transport needs is f*(ωo → ωi) = f(ωi → ωo) |ωo·Ns| |ωi·Ng| / (|ωo·Ng| |ωi·Ns|). illum's
-// BSDFs leave this to the integrator. ωo: towards the particle's previous vertex; ωi: where it goes next.
-float shading_normal_adjoint(const SurfaceHit& hit, Vector3f wo, Vector3f wi) {
-    if (hit.ns == hit.n) return 1;
-    float num = std::abs(dot(wo, Vector3f(hit.ns))) * std::abs(dot(wi, Vector3f(hit.n)));
-    float den = std::abs(dot(wo, Vector3f(hit.n))) * std::abs(dot(wi, Vector3f(hit.ns)));
-    return den > 0 ? num / den : 0.0f;
-}
-
-} // namespace
 
 LightPathIntegrator::LightPathIntegrator(const Scene& scene, int max_depth, bool caustics_only)
     : WholeImageIntegrator(scene), max_depth_(max_depth), caustics_only_(caustics_only) {

@@ -82,8 +82,10 @@ struct PathContext {
     float time = 0;     // the pixel sample's time (motion blur), shared by both subpaths
 };
 
-// Veach 1997 eq. 5.19: the adjoint BSDF's shading-normal factor |ωo·Ns| |ωi·Ng| / (|ωo·Ng| |ωi·Ns|) for
-// importance transport (illum's BSDFs leave it to the integrator, as lightpath_integrator.cpp does).
+// Veach 1997 §5.3 (eq. 5.19): with shading normals the BSDF is not symmetric, and importance transport
+// needs the adjoint f*(ωo → ωi) = f(ωi → ωo) |ωo·Ns| |ωi·Ng| / (|ωo·Ng| |ωi·Ns|); this is that factor.
+// illum's BSDFs leave it to the integrators (bdpt, vcm, lightpath). ωo: towards the particle's previous
+// vertex; ωi: where it goes next.
 float shading_normal_adjoint(const SurfaceHit& hit, Vector3f wo, Vector3f wi);
 
 // The density `pdf` per steradian at v of the direction towards `next`, per unit area at next (the cosine
