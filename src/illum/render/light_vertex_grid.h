@@ -37,21 +37,36 @@ public:
             lo[a] = f0 < 0 ? 0 : int(f0);
             hi[a] = f1 >= float(res_[a]) ? res_[a] - 1 : int(f1);
         }
-        const float r2 = r_ * r_;
+        // The box spans at most 2 cells per axis (a cell is 2r wide; 3 allowed for rounding). The cells'
+        // buckets and then their first entries are prefetched before any is read, so that their cache
+        // misses overlap instead of following each other; the visits keep their order.
+        constexpr int kMaxCells = 27;
+        std::uint64_t cells[kMaxCells];
+        std::uint32_t first[kMaxCells], last[kMaxCells];
+        int n = 0;
         for (int z = lo[2]; z <= hi[2]; ++z)
             for (int y = lo[1]; y <= hi[1]; ++y)
-                for (int xx = lo[0]; xx <= hi[0]; ++xx) {
-                    const std::uint64_t cell = cell_index(xx, y, z);
-                    const std::size_t b = bucket(cell);
-                    for (std::uint32_t e = offsets_[b]; e < offsets_[b + 1]; ++e) {
-                        const Entry& en = entries_[e];
-                        Vector3f d = en.p - x;
-                        if (d.x * d.x + d.y * d.y + d.z * d.z > r2) continue;
-                        // Two cells may share a bucket: visit a point from its own cell only.
-                        if (cell_of(en.p) != cell) continue;
-                        visit(en.index);
-                    }
+                for (int xx = lo[0]; xx <= hi[0] && n < kMaxCells; ++xx) {
+                    cells[n] = cell_index(xx, y, z);
+                    __builtin_prefetch(&offsets_[bucket(cells[n])]);
+                    ++n;
                 }
+        for (int k = 0; k < n; ++k) {
+            const std::size_t b = bucket(cells[k]);
+            first[k] = offsets_[b];
+            last[k] = offsets_[b + 1];
+            if (first[k] < last[k]) __builtin_prefetch(&entries_[first[k]]);
+        }
+        const float r2 = r_ * r_;
+        for (int k = 0; k < n; ++k)
+            for (std::uint32_t e = first[k]; e < last[k]; ++e) {
+                const Entry& en = entries_[e];
+                Vector3f d = en.p - x;
+                if (d.x * d.x + d.y * d.y + d.z * d.z > r2) continue;
+                // Two cells may share a bucket: visit a point from its own cell only.
+                if (cell_of(en.p) != cells[k]) continue;
+                visit(en.index);
+            }
     }
 
     // Renumbers the points in the order of the grid's entries, cell by cell: afterwards visit() receives
