@@ -42,19 +42,20 @@ public:
         // misses overlap instead of following each other; the visits keep their order.
         constexpr int kMaxCells = 27;
         std::uint64_t cells[kMaxCells];
+        std::size_t buckets[kMaxCells];
         std::uint32_t first[kMaxCells], last[kMaxCells];
         int n = 0;
         for (int z = lo[2]; z <= hi[2]; ++z)
             for (int y = lo[1]; y <= hi[1]; ++y)
                 for (int xx = lo[0]; xx <= hi[0] && n < kMaxCells; ++xx) {
                     cells[n] = cell_index(xx, y, z);
-                    __builtin_prefetch(&offsets_[bucket(cells[n])]);
+                    buckets[n] = bucket(cells[n]);
+                    __builtin_prefetch(&offsets_[buckets[n]]);
                     ++n;
                 }
         for (int k = 0; k < n; ++k) {
-            const std::size_t b = bucket(cells[k]);
-            first[k] = offsets_[b];
-            last[k] = offsets_[b + 1];
+            first[k] = offsets_[buckets[k]];
+            last[k] = offsets_[buckets[k] + 1];
             if (first[k] < last[k]) __builtin_prefetch(&entries_[first[k]]);
         }
         const float r2 = r_ * r_;
