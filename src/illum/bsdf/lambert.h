@@ -30,6 +30,12 @@ public:
         return SolidAnglePdf(cosine_hemisphere_pdf(std::abs(wi.z)));
     }
 
+    BSDFEval eval(Vector3f wo, Vector3f wi, TransportMode) const override {
+        if (!same_hemisphere(wo, wi)) return {};
+        return {Bsdf3(reflectance_ * kInvPi), cosine_hemisphere_pdf(std::abs(wi.z)),
+                cosine_hemisphere_pdf(std::abs(wo.z))};
+    }
+
     SampledSpectrum reflectance() const { return reflectance_; }
 
 private:

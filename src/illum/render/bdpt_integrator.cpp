@@ -50,9 +50,31 @@ int strategy_index(int s, int t) {
 struct Subpaths {
     std::vector<PathVertex> camera, light;
     PathVertex sampled; // the endpoint a strategy samples (s = 1: a light point, t = 1: the camera's)
+    // The weights' running sums over each subpath (subpath_sums), so that a connection's weight costs O(1)
+    // beyond the joint.
+    std::vector<float> camera_tail, light_tail;
 };
 
 float remap0(float f) { return f != 0 ? f : 1.0f; }
+
+// The running sums of mis_weight's loops over one subpath, as vcm_mis.h's subpath_tails (without merging):
+// tail[i] is the loop's sum over the vertices i, i - 1, ... down to the subpath's end, with the ratio 1
+// before vertex i, for the strategies that move the connection there. Camera subpath: vertex 0 is on the
+// camera (tail[0] = 0); light subpath: vertex 0 is on the light. Only the subpath's own densities enter,
+// which no connection changes below the joint's two neighbours.
+void subpath_sums(const PathVertex* v, int n, bool camera, float* tail) {
+    float below = 0;
+    for (int i = 0; i < n; ++i) {
+        if (camera && i == 0) {
+            tail[0] = 0;
+            continue;
+        }
+        const bool delta_before = i > 0 ? v[i - 1].delta : v[0].is_delta_light();
+        const float term = !v[i].delta && !delta_before ? 1.0f : 0.0f;
+        tail[i] = remap0(v[i].pdf_rev) / remap0(v[i].pdf_fwd) * (term + below);
+        below = tail[i];
+    }
+}
 
 // The balance heuristic for strategy (s, t) (Veach 1997 §10.2.1, eq. 10.9): with p_i the density of the
 // path under the strategy with i light vertices, w = p_s / Σ p_i, evaluated as 1 / (1 + Σ_{i≠s} p_i/p_s)
@@ -61,9 +83,13 @@ float remap0(float f) { return f != 0 ? f : 1.0f; }
 // light. The reverse densities at the connection's two ends and their predecessors depend on the
 // strategy: they are computed here and used in place of the stored ones (the subpaths are not written).
 // `sampled`, when given, is the strategy's own endpoint: the light point of s = 1 (in lv[0]'s place) or
-// the camera point of t = 1 (in cv[0]'s place).
+// the camera point of t = 1 (in cv[0]'s place). at_qs / at_pt: the connection's ends' scattering towards
+// each other where connect() evaluated it (join_densities). Beyond the joint's two neighbours on each side
+// the sums are the subpaths' running sums (light_tail, camera_tail: subpath_sums), whose terms are the
+// loops' own.
 float mis_weight(const PathContext& ctx, const PathVertex* lv, const PathVertex* cv, int s, int t,
-                 const PathVertex* sampled) {
+                 const PathVertex* sampled, const EndScattering* at_qs, const EndScattering* at_pt,
+                 const float* light_tail, const float* camera_tail) {
     if (s + t == 2) return 1;
     const PathVertex* l0 = s == 1 && sampled ? sampled : lv;
     const PathVertex* qs = s > 0 ? (s == 1 ? l0 : &lv[s - 1]) : nullptr;
@@ -72,11 +98,15 @@ float mis_weight(const PathContext& ctx, const PathVertex* lv, const PathVertex*
     const PathVertex* pt_m = t > 1 ? &cv[t - 2] : nullptr;
 
     // The reverse densities next to the connection, used in place of the stored ones.
-    const JoinDensities j = join_densities(ctx, qs, qs_m, *pt, pt_m);
+    const JoinDensities j = join_densities(ctx, qs, qs_m, *pt, pt_m, at_qs, at_pt);
     if (!j.joined) return 0;
 
     float sum = 0, ri = 1;
     for (int i = t - 1; i > 0; --i) {
+        if (i == t - 3) {
+            sum += ri * camera_tail[i];
+            break;
+        }
         const float rev = i == t - 1 ? j.pt_rev : (i == t - 2 ? j.pt_m_rev : cv[i].pdf_rev);
         ri *= remap0(rev) / remap0(cv[i].pdf_fwd);
         const bool delta = i == t - 1 ? false : cv[i].delta;
@@ -84,6 +114,10 @@ float mis_weight(const PathContext& ctx, const PathVertex* lv, const PathVertex*
     }
     ri = 1;
     for (int i = s - 1; i >= 0; --i) {
+        if (i == s - 3) { // s >= 3: lv[0] is the subpath's own
+            sum += ri * light_tail[i];
+            break;
+        }
         const PathVertex& v = i == 0 ? *l0 : lv[i];
         const float rev = i == s - 1 ? j.qs_rev : (i == s - 2 ? j.qs_m_rev : v.pdf_rev);
         ri *= remap0(rev) / remap0(v.pdf_fwd);
@@ -96,8 +130,10 @@ float mis_weight(const PathContext& ctx, const PathVertex* lv, const PathVertex*
 
 // The contribution of strategy (s, t), MIS-weighted, and its weight in *weight. t = 1 sets *p_raster (a
 // splat). `sampled` is scratch for the endpoint that s = 1 and t = 1 sample.
-SampledSpectrum connect(const PathContext& ctx, const PathVertex* lv, const PathVertex* cv, int s, int t,
-                        int ch, bool camera_delta, PathVertex* sampled, Point2f* p_raster, float* weight) {
+SampledSpectrum connect(const PathContext& ctx, const Subpaths& sp, int s, int t, int ch, bool camera_delta,
+                        PathVertex* sampled, Point2f* p_raster, float* weight) {
+    const PathVertex* lv = sp.light.data();
+    const PathVertex* cv = sp.camera.data();
     const Scene& scene = ctx.scene;
     Sampler& sampler = ctx.tc.sampler;
     // A light vertex at infinity ends the camera subpath; only s = 0 uses it.
@@ -105,6 +141,8 @@ SampledSpectrum connect(const PathContext& ctx, const PathVertex* lv, const Path
 
     SampledSpectrum l(0.0f);
     bool have_sampled = false;
+    EndScattering at_qs, at_pt;
+    const EndScattering *qs_end = nullptr, *pt_end = nullptr;
     if (s == 0) {
         const PathVertex& pt = cv[t - 1];
         if (pt.is_light()) l = vertex_le(ctx, pt, cv[t - 2]) * pt.beta;
@@ -126,7 +164,11 @@ SampledSpectrum connect(const PathContext& ctx, const PathVertex* lv, const Path
         sampled->pdf_fwd = sampled->pdf_rev = 0;
         sampled->beta = SampledSpectrum((cs->we / cs->pdf).value);
         have_sampled = true;
-        l = qs.beta * vertex_f(qs, *sampled, TransportMode::Importance) * sampled->beta;
+        const Segment to_camera = segment(qs, *sampled);
+        if (!(to_camera.inv_d2 > 0)) return SampledSpectrum(0.0f);
+        at_qs = end_scattering(qs, to_camera.w, TransportMode::Importance);
+        qs_end = &at_qs;
+        l = qs.beta * at_qs.f * sampled->beta;
         if (qs.on_surface()) l *= std::abs(dot(cs->wi, Vector3f(qs.ns)));
         if (!l.is_black()) l *= connection_transmittance(ctx, qs, *sampled, ch);
     } else if (s == 1) {
@@ -134,7 +176,9 @@ SampledSpectrum connect(const PathContext& ctx, const PathVertex* lv, const Path
         if (!pt.is_connectible()) return SampledSpectrum(0.0f);
         float u_light = sampler.get_1d();
         Point2f u = sampler.get_2d();
-        if (!connect_sampled_light(ctx, pt, u_light, u, ch, sampled, &l)) return SampledSpectrum(0.0f);
+        if (!connect_sampled_light(ctx, pt, u_light, u, ch, sampled, &l, &at_pt))
+            return SampledSpectrum(0.0f);
+        pt_end = &at_pt;
         have_sampled = true;
     } else {
         const PathVertex& qs = lv[s - 1];
@@ -142,14 +186,18 @@ SampledSpectrum connect(const PathContext& ctx, const PathVertex* lv, const Path
         if (!qs.is_connectible() || !pt.is_connectible()) return SampledSpectrum(0.0f);
         const Segment joint = segment(qs, pt);
         if (!(joint.inv_d2 > 0)) return SampledSpectrum(0.0f);
-        l = qs.beta * vertex_f(qs, joint.w, TransportMode::Importance) *
-            vertex_f(pt, -joint.w, TransportMode::Radiance) * pt.beta;
+        at_qs = end_scattering(qs, joint.w, TransportMode::Importance);
+        at_pt = end_scattering(pt, -joint.w, TransportMode::Radiance);
+        qs_end = &at_qs;
+        pt_end = &at_pt;
+        l = qs.beta * at_qs.f * at_pt.f * pt.beta;
         if (!l.is_black()) l *= connect_g(ctx, qs, pt, joint, ch);
     }
     if (l.is_black()) return l;
 
     // The strategy's sampled endpoint stands in for the subpath's own while the weight is computed.
-    const float w = mis_weight(ctx, lv, cv, s, t, have_sampled ? sampled : nullptr);
+    const float w = mis_weight(ctx, lv, cv, s, t, have_sampled ? sampled : nullptr, qs_end, pt_end,
+                               sp.light_tail.data(), sp.camera_tail.data());
     *weight = w;
     return l * w;
 }
@@ -192,6 +240,8 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         Subpaths sp;
         sp.camera.resize(std::size_t(max_depth_) + 2);
         sp.light.resize(std::size_t(max_depth_) + 1);
+        sp.camera_tail.resize(sp.camera.size());
+        sp.light_tail.resize(sp.light.size());
         return sp;
     });
     Film film(w, h);
@@ -266,6 +316,8 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         float u_light = sampler.get_1d();
         Point2f u_pos = sampler.get_2d(), u_dir = sampler.get_2d();
         int n_light = trace_light_subpath(ctx, u_light, u_pos, u_dir, max_depth, ch_light, lv);
+        subpath_sums(cv, n_camera, true, sp.camera_tail.data());
+        subpath_sums(lv, n_light, false, sp.light_tail.data());
 
         SampledSpectrum l(0.0f);
         // s = 1 samples a light of its own, so it runs even when the light subpath is empty (a photon that
@@ -277,7 +329,7 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
                 Point2f p_raster;
                 float w = 0;
                 SampledSpectrum c =
-                    connect(ctx, lv, cv, s, t, ch_camera, camera_delta, &sp.sampled, &p_raster, &w);
+                    connect(ctx, sp, s, t, ch_camera, camera_delta, &sp.sampled, &p_raster, &w);
                 if (c.is_black()) continue;
                 if (!c.is_finite() || c.has_negative()) {
                     ++out.dropped;

@@ -157,8 +157,51 @@ float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* 
     return vertex_pdf(ctx, v, wp, to_next.w, next, to_next.inv_d2);
 }
 
+EndScattering end_scattering(const PathVertex& v, Vector3f w, TransportMode mode) {
+    EndScattering e;
+    switch (v.type) {
+    case VertexType::Surface: {
+        const BSDFEval b = v.bsdf.eval(v.wo, w, mode);
+        e.f = b.f.s;
+        if (mode == TransportMode::Importance) e.f *= shading_normal_adjoint(v.hit, v.wo, w);
+        e.pdf_w = b.pdf_wi;
+        e.pdf_wo = b.pdf_wo;
+        break;
+    }
+    case VertexType::Medium: {
+        // The phase function of the angle between the directions of travel; symmetric.
+        const float p = v.phase.p(dot(-v.wo, w));
+        e.f = SampledSpectrum(p);
+        e.pdf_w = e.pdf_wo = p;
+        break;
+    }
+    default:
+        break;
+    }
+    return e;
+}
+
+namespace {
+
+// A solid-angle density at v of the unit direction wn towards `next`, per unit area there (vertex_pdf's
+// conversion).
+float area_density(float pdf, Vector3f wn, const PathVertex& next, float inv_d2) {
+    if (next.is_infinite_light()) return pdf;
+    if (next.ng != Normal3f{}) pdf *= std::abs(dot(Vector3f(next.ng), wn));
+    return pdf * inv_d2;
+}
+
+// Whether an end's end_scattering stands for vertex_pdf there: a surface or medium vertex entered from a
+// predecessor.
+bool scatters(const EndScattering* e, const PathVertex& v, const PathVertex* v_m) {
+    return e && v_m && (v.type == VertexType::Surface || v.type == VertexType::Medium);
+}
+
+} // namespace
+
 JoinDensities join_densities(const PathContext& ctx, const PathVertex* qs, const PathVertex* qs_m,
-                             const PathVertex& pt, const PathVertex* pt_m) {
+                             const PathVertex& pt, const PathVertex* pt_m, const EndScattering* at_qs,
+                             const EndScattering* at_pt) {
     JoinDensities j;
     if (!qs) {
         j.pt_rev = pdf_light_origin(ctx, pt, *pt_m);
@@ -170,10 +213,21 @@ JoinDensities join_densities(const PathContext& ctx, const PathVertex* qs, const
         j.joined = false;
         return j;
     }
-    j.pt_rev = vertex_pdf(ctx, *qs, qs_m ? qs->wo : Vector3f{}, -joint.w, pt, joint.inv_d2);
-    j.qs_rev = vertex_pdf(ctx, pt, pt_m ? pt.wo : Vector3f{}, joint.w, *qs, joint.inv_d2);
-    if (pt_m) j.pt_m_rev = vertex_pdf(ctx, pt, joint.w, pt.wo, *pt_m, inv_distance_squared(pt, *pt_m));
-    if (qs_m) j.qs_m_rev = vertex_pdf(ctx, *qs, -joint.w, qs->wo, *qs_m, inv_distance_squared(*qs, *qs_m));
+    const bool qs_given = scatters(at_qs, *qs, qs_m), pt_given = scatters(at_pt, pt, pt_m);
+    j.pt_rev = qs_given ? area_density(at_qs->pdf_w, -joint.w, pt, joint.inv_d2)
+                        : vertex_pdf(ctx, *qs, qs_m ? qs->wo : Vector3f{}, -joint.w, pt, joint.inv_d2);
+    j.qs_rev = pt_given ? area_density(at_pt->pdf_w, joint.w, *qs, joint.inv_d2)
+                        : vertex_pdf(ctx, pt, pt_m ? pt.wo : Vector3f{}, joint.w, *qs, joint.inv_d2);
+    if (pt_m) {
+        const float inv_d2 = inv_distance_squared(pt, *pt_m);
+        j.pt_m_rev = pt_given ? area_density(at_pt->pdf_wo, pt.wo, *pt_m, inv_d2)
+                              : vertex_pdf(ctx, pt, joint.w, pt.wo, *pt_m, inv_d2);
+    }
+    if (qs_m) {
+        const float inv_d2 = inv_distance_squared(*qs, *qs_m);
+        j.qs_m_rev = qs_given ? area_density(at_qs->pdf_wo, qs->wo, *qs_m, inv_d2)
+                              : vertex_pdf(ctx, *qs, -joint.w, qs->wo, *qs_m, inv_d2);
+    }
     return j;
 }
 
@@ -410,7 +464,7 @@ SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const Pat
 }
 
 bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u_light, Point2f u,
-                           int channel, PathVertex* sampled, SampledSpectrum* l) {
+                           int channel, PathVertex* sampled, SampledSpectrum* l, EndScattering* at_pt) {
     float pmf = 0;
     const Light* light = ctx.scene.light_sampler.sample(u_light, &pmf);
     if (!light || !(pmf > 0)) return false;
@@ -436,7 +490,14 @@ bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u
     // The biradiance is L / p_ω (or I / r² for a point): the light's end of the path over its density.
     sampled->beta = ls->biradiance.s / pmf;
     sampled->pdf_fwd = pdf_light_origin(ctx, *sampled, pt);
-    *l = pt.beta * vertex_f(pt, *sampled, TransportMode::Radiance) * sampled->beta;
+    if (at_pt) {
+        const Segment to_light = segment(pt, *sampled);
+        if (!(to_light.inv_d2 > 0)) return false;
+        *at_pt = end_scattering(pt, to_light.w, TransportMode::Radiance);
+        *l = pt.beta * at_pt->f * sampled->beta;
+    } else {
+        *l = pt.beta * vertex_f(pt, *sampled, TransportMode::Radiance) * sampled->beta;
+    }
     if (pt.on_surface()) *l *= std::abs(dot(ls->wi, Vector3f(pt.ns)));
     if (!l->is_black()) *l *= connection_transmittance(ctx, pt, *sampled, channel);
     return true;

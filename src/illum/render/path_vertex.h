@@ -135,8 +135,20 @@ struct JoinDensities {
     float pt_rev = 0, pt_m_rev = 0, qs_rev = 0, qs_m_rev = 0;
     bool joined = true;
 };
+// What a connection reads at one of its ends v, a surface or medium vertex, with w the unit direction
+// towards the other end: the scattering value from v's predecessor towards w (vertex_f) and the two
+// solid-angle densities join_densities needs there, of w given v.wo and of v.wo given w. One BSDF
+// evaluation gives all three.
+struct EndScattering {
+    SampledSpectrum f;
+    float pdf_w = 0, pdf_wo = 0;
+};
+EndScattering end_scattering(const PathVertex& v, Vector3f w, TransportMode mode);
+// at_qs / at_pt (optional): the ends' end_scattering towards each other, for the densities at qs and pt
+// in place of new evaluations (only where the end is a surface or medium vertex with a predecessor).
 JoinDensities join_densities(const PathContext& ctx, const PathVertex* qs, const PathVertex* qs_m,
-                             const PathVertex& pt, const PathVertex* pt_m);
+                             const PathVertex& pt, const PathVertex* pt_m,
+                             const EndScattering* at_qs = nullptr, const EndScattering* at_pt = nullptr);
 // The density (area, at next) with which the light at v emits towards next.
 float pdf_light(const PathContext& ctx, const PathVertex& v, const PathVertex& next);
 // The density with which a light subpath starts at v (light selection times position; for a vertex at
@@ -171,10 +183,11 @@ int trace_light_subpath(const PathContext& ctx, float u_light, Point2f u_pos, Po
                         int channel, PathVertex* path);
 // Strategy s = 1 of a connection at camera vertex pt (next-event estimation): a light chosen by the scene's
 // light sampler with u_light and a point on it sampled towards pt with u. Fills *sampled (the light vertex,
-// whose pdf_fwd is its origin density, for the MIS weights) and *l = β_pt f |cos| T L / p; false when no
-// light point was sampled.
+// whose pdf_fwd is its origin density, for the MIS weights) and *l = β_pt f |cos| T L / p, and *at_pt
+// (when given) with pt's end_scattering towards the light; false when no light point was sampled.
 bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u_light, Point2f u,
-                           int channel, PathVertex* sampled, SampledSpectrum* l);
+                           int channel, PathVertex* sampled, SampledSpectrum* l,
+                           EndScattering* at_pt = nullptr);
 // The geometry term with transmittance: |cos_a| |cos_b| T / d² (cosines with the shading normals, only at
 // surface vertices), with ab = segment(a, b) (non-degenerate) at hand.
 SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, const Segment& ab,

@@ -125,13 +125,15 @@ float pow_beta(float x, float beta) { return beta == 2 ? x * x : x; }
 // The densities of the vertices next to a join between lv[s-1] and cv[t-1] as they are in the joined path
 // (Veach eq. 10.9's reverse densities, as bdpt_integrator.cpp's mis_weight), written into the weights'
 // copies ml (s entries) and mc (t entries), and the joint's ends made non-delta.
+// at_qs / at_pt: the ends' scattering towards each other where the connection evaluated it.
 void set_join_densities(const PathContext& ctx, const PathVertex* lv, int s, const PathVertex* cv, int t,
-                        MisVertex* ml, MisVertex* mc) {
+                        MisVertex* ml, MisVertex* mc, const EndScattering* at_qs = nullptr,
+                        const EndScattering* at_pt = nullptr) {
     const PathVertex* qs = s > 0 ? &lv[s - 1] : nullptr;
     const PathVertex* pt = t > 0 ? &cv[t - 1] : nullptr;
     const PathVertex* qs_m = s > 1 ? &lv[s - 2] : nullptr;
     const PathVertex* pt_m = t > 1 ? &cv[t - 2] : nullptr;
-    const JoinDensities j = join_densities(ctx, qs, qs_m, *pt, pt_m);
+    const JoinDensities j = join_densities(ctx, qs, qs_m, *pt, pt_m, at_qs, at_pt);
     mc[t - 1].rev = j.pt_rev;
     mc[t - 1].delta = false;
     if (pt_m) mc[t - 2].rev = j.pt_m_rev;
@@ -259,7 +261,10 @@ void VcmRender::trace_light(std::size_t p, int sample_index, ThreadContext& tc, 
         cam.p = cs->p_lens;
         cam.medium = scene_.camera_medium;
         cam.beta = SampledSpectrum((cs->we / cs->pdf).value);
-        SampledSpectrum l = qs.beta * vertex_f(qs, cam, TransportMode::Importance) * cam.beta;
+        const Segment to_camera = segment(qs, cam);
+        if (!(to_camera.inv_d2 > 0)) continue;
+        const EndScattering at_qs = end_scattering(qs, to_camera.w, TransportMode::Importance);
+        SampledSpectrum l = qs.beta * at_qs.f * cam.beta;
         if (qs.on_surface()) l *= std::abs(dot(cs->wi, Vector3f(qs.ns)));
         if (l.is_black()) continue;
         l *= connection_transmittance(ctx, qs, cam, ch);
@@ -267,7 +272,7 @@ void VcmRender::trace_light(std::size_t p, int sample_index, ThreadContext& tc, 
         std::copy(sc.lmis.begin(), sc.lmis.begin() + s, sc.tmp_l.begin());
         MisVertex mc;
         mc.delta = camera_delta_;
-        set_join_densities(ctx, lv, s, &cam, 1, sc.tmp_l.data(), &mc);
+        set_join_densities(ctx, lv, s, &cam, 1, sc.tmp_l.data(), &mc, &at_qs);
         float sum = technique_sum(sc.tmp_l.data(), s, &mc, 1, light0_delta, techniques_, sc.ltail.data());
         float wt = sum > 0 ? connection_term(sc.tmp_l.data(), s, &mc, 1, techniques_) / sum : 0.0f;
         SampledSpectrum c = l * (wt * splat_scale);
@@ -354,6 +359,8 @@ SampledSpectrum VcmRender::connect(const PathContext& ctx, Scratch& sc, int s, i
     SampledSpectrum l(0.0f);
     PathVertex& sampled = sc.sampled;
     bool have_sampled = false;
+    EndScattering at_qs, at_pt;
+    const EndScattering* qs_end = nullptr;
     if (s == 0) {
         const PathVertex& pt = cv[t - 1];
         if (pt.is_light()) l = vertex_le(ctx, pt, cv[t - 2]) * pt.beta;
@@ -363,7 +370,8 @@ SampledSpectrum VcmRender::connect(const PathContext& ctx, Scratch& sc, int s, i
         float u_light = sampler.get_1d();
         Point2f u = sampler.get_2d();
         if (!pt.is_connectible()) return SampledSpectrum(0.0f);
-        if (!connect_sampled_light(ctx, pt, u_light, u, ch, &sampled, &l)) return SampledSpectrum(0.0f);
+        if (!connect_sampled_light(ctx, pt, u_light, u, ch, &sampled, &l, &at_pt))
+            return SampledSpectrum(0.0f);
         have_sampled = true;
     } else {
         const PathVertex& qs = lv[s - 1];
@@ -371,11 +379,15 @@ SampledSpectrum VcmRender::connect(const PathContext& ctx, Scratch& sc, int s, i
         if (!qs.is_connectible() || !pt.is_connectible()) return SampledSpectrum(0.0f);
         const Segment joint = segment(qs, pt);
         if (!(joint.inv_d2 > 0)) return SampledSpectrum(0.0f);
-        l = qs.beta * vertex_f(qs, joint.w, TransportMode::Importance) *
-            vertex_f(pt, -joint.w, TransportMode::Radiance) * pt.beta;
+        at_qs = end_scattering(qs, joint.w, TransportMode::Importance);
+        at_pt = end_scattering(pt, -joint.w, TransportMode::Radiance);
+        qs_end = &at_qs;
+        l = qs.beta * at_qs.f * at_pt.f * pt.beta;
         if (!l.is_black()) l *= connect_g(ctx, qs, pt, joint, ch);
     }
     if (l.is_black()) return l;
+    // s = 0 leaves at_pt unused (pt is on an emitter; its densities are the light's).
+    const EndScattering* pt_end = s > 0 ? &at_pt : nullptr;
 
     // The weight, with the sampled light point standing in for lv[0] (s = 1).
     MisVertex* ml = sc.tmp_l.data();
@@ -385,11 +397,11 @@ SampledSpectrum VcmRender::connect(const PathContext& ctx, Scratch& sc, int s, i
     if (have_sampled) {
         ml[0] = mis_of(sampled);
         delta0 = sampled.is_delta_light();
-        set_join_densities(ctx, &sampled, 1, cv, t, ml, mc);
+        set_join_densities(ctx, &sampled, 1, cv, t, ml, mc, nullptr, pt_end);
     } else {
         std::copy(sc.lmis.begin(), sc.lmis.begin() + s, ml);
         if (s == 0) delta0 = false; // an emitter that was hit has an area
-        set_join_densities(ctx, lv, s, cv, t, ml, mc);
+        set_join_densities(ctx, lv, s, cv, t, ml, mc, qs_end, pt_end);
     }
     float sum = technique_sum(ml, s, mc, t, delta0, techniques_, have_sampled ? nullptr : sc.ltail.data(),
                               sc.ctail.data());
