@@ -198,6 +198,33 @@ AuditResult audit_bxdf(const BxDF& bxdf, const AuditTraits& traits, const AuditO
         result.checks.push_back(c.r);
     }
 
+    // 1b. eval() gives what f() and the two pdf() calls give (a model may compute them together; the
+    // bidirectional connections read them from it).
+    {
+        Check c("eval");
+        auto close = [](float x, float y) {
+            return std::abs(x - y) <= 1e-5f * std::max(std::abs(x), std::abs(y));
+        };
+        for (int i = 0; i < o.pairs; ++i) {
+            Vector3f a = sample_uniform_sphere({U(), U()}), b = sample_uniform_sphere({U(), U()});
+            if (a.z == 0 || b.z == 0) continue;
+            for (auto mode : {kRad, kImp}) {
+                const BSDFEval e = bxdf.eval(a, b, mode);
+                const Color3 fe = e.f.rgb(), f = bxdf.f(a, b, mode).rgb();
+                const float p_ab = bxdf.pdf(a, b, kRad).value, p_ba = bxdf.pdf(b, a, kRad).value;
+                if (!close(fe.r, f.r) || !close(fe.g, f.g) || !close(fe.b, f.b) || !close(e.pdf_wi, p_ab) ||
+                    !close(e.pdf_wo, p_ba))
+                    c.fail(
+                        fmt::format("eval gives f = ({}, {}, {}), pdfs {} {}; f() ({}, {}, {}), pdf() {} {} "
+                                    "at wo {} wi {}",
+                                    fe.r, fe.g, fe.b, e.pdf_wi, e.pdf_wo, f.r, f.g, f.b, p_ab, p_ba,
+                                    dir_str(a), dir_str(b)));
+            }
+        }
+        c.note(fmt::format("{} random pairs, both modes", o.pairs));
+        result.checks.push_back(c.r);
+    }
+
     // 2. Reciprocity.
     {
         Check c("reciprocity");
