@@ -65,12 +65,13 @@ struct BSDFSample {
 };
 
 // The value and both densities of one pair of directions, as a bidirectional connection needs them at
-// each of its ends (Veach 1997 eq. 10.9): f(wo, wi), the density of sampling wi from wo and that of
-// sampling wo from wi (both in radiance mode, as BSDF::pdf's default).
+// each of its ends (Veach 1997 eq. 10.9): f(wo, wi), and where has_pdfs the density of sampling wi from wo
+// and that of sampling wo from wi (both in radiance mode, as BSDF::pdf's default).
 struct BSDFEval {
     Bsdf3 f;
     float pdf_wi = 0; // pdf(wo → wi) [sr^-1]
     float pdf_wo = 0; // pdf(wi → wo) [sr^-1]
+    bool has_pdfs = false;
 };
 
 class BxDF {
@@ -81,12 +82,11 @@ public:
     // uc picks a lobe, u picks a direction in it. Returns nothing when no direction is sampled.
     virtual std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const = 0;
     virtual SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode mode) const = 0;
-    // f and the two densities in one call (wo.z and wi.z nonzero): the same values as the three calls,
-    // which a model may compute together.
-    virtual BSDFEval eval(Vector3f wo, Vector3f wi, TransportMode mode) const {
-        return {f(wo, wi, mode), pdf(wo, wi, TransportMode::Radiance).value,
-                pdf(wi, wo, TransportMode::Radiance).value};
-    }
+    // f (wo.z and wi.z nonzero) and, in a model that computes them with f at little extra cost, the two
+    // densities (has_pdfs): the values f() and pdf() give. By default f alone: a caller that needs the
+    // densities asks pdf() for them only when it does (a blocked connection does not), which matters
+    // where they are costly (the stochastic layered models).
+    virtual BSDFEval eval(Vector3f wo, Vector3f wi, TransportMode mode) const { return {f(wo, wi, mode)}; }
 };
 
 // A BxDF placed in the world by a shading frame.
@@ -115,18 +115,13 @@ public:
         if (wo.z == 0) return {};
         return bxdf_->pdf(wo, wi, mode);
     }
-    // f(wo, wi) in `mode`, pdf(wo, wi) and pdf(wi, wo): what f() and the two pdf() calls return, with the
-    // directions taken into the shading frame once.
+    // f(wo, wi) in `mode` and, where the model gives them (BxDF::eval), pdf(wo, wi) and pdf(wi, wo): what
+    // f() and the two pdf() calls return, with the directions taken into the shading frame once.
     BSDFEval eval(Vector3f wo_world, Vector3f wi_world, TransportMode mode) const {
         Vector3f wo = to_local(wo_world), wi = to_local(wi_world);
-        if (wo.z != 0 && wi.z != 0) return bxdf_->eval(wo, wi, mode);
-        BSDFEval e;
-        if (wo.z != 0) {
-            e.f = bxdf_->f(wo, wi, mode);
-            e.pdf_wi = bxdf_->pdf(wo, wi, TransportMode::Radiance).value;
-        }
-        if (wi.z != 0) e.pdf_wo = bxdf_->pdf(wi, wo, TransportMode::Radiance).value;
-        return e;
+        if (wo.z == 0) return {};
+        if (wi.z == 0) return {bxdf_->f(wo, wi, mode)};
+        return bxdf_->eval(wo, wi, mode);
     }
     std::optional<BSDFSample> sample(Vector3f wo_world, float uc, Point2f u,
                                      TransportMode mode = TransportMode::Radiance) const {

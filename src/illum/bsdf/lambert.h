@@ -31,9 +31,9 @@ public:
     }
 
     BSDFEval eval(Vector3f wo, Vector3f wi, TransportMode) const override {
-        if (!same_hemisphere(wo, wi)) return {};
+        if (!same_hemisphere(wo, wi)) return {{}, 0, 0, true};
         return {Bsdf3(reflectance_ * kInvPi), cosine_hemisphere_pdf(std::abs(wi.z)),
-                cosine_hemisphere_pdf(std::abs(wo.z))};
+                cosine_hemisphere_pdf(std::abs(wo.z)), true};
     }
 
     SampledSpectrum reflectance() const { return reflectance_; }

@@ -166,6 +166,7 @@ EndScattering end_scattering(const PathVertex& v, Vector3f w, TransportMode mode
         if (mode == TransportMode::Importance) e.f *= shading_normal_adjoint(v.hit, v.wo, w);
         e.pdf_w = b.pdf_wi;
         e.pdf_wo = b.pdf_wo;
+        e.has_pdfs = b.has_pdfs;
         break;
     }
     case VertexType::Medium: {
@@ -173,6 +174,7 @@ EndScattering end_scattering(const PathVertex& v, Vector3f w, TransportMode mode
         const float p = v.phase.p(dot(-v.wo, w));
         e.f = SampledSpectrum(p);
         e.pdf_w = e.pdf_wo = p;
+        e.has_pdfs = true;
         break;
     }
     default:
@@ -191,10 +193,10 @@ float area_density(float pdf, Vector3f wn, const PathVertex& next, float inv_d2)
     return pdf * inv_d2;
 }
 
-// Whether an end's end_scattering stands for vertex_pdf there: a surface or medium vertex entered from a
-// predecessor.
+// Whether an end's end_scattering stands for vertex_pdf there: it holds the densities, at a surface or
+// medium vertex entered from a predecessor.
 bool scatters(const EndScattering* e, const PathVertex& v, const PathVertex* v_m) {
-    return e && v_m && (v.type == VertexType::Surface || v.type == VertexType::Medium);
+    return e && e->has_pdfs && v_m && (v.type == VertexType::Surface || v.type == VertexType::Medium);
 }
 
 } // namespace

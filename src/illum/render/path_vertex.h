@@ -136,12 +136,14 @@ struct JoinDensities {
     bool joined = true;
 };
 // What a connection reads at one of its ends v, a surface or medium vertex, with w the unit direction
-// towards the other end: the scattering value from v's predecessor towards w (vertex_f) and the two
-// solid-angle densities join_densities needs there, of w given v.wo and of v.wo given w. One BSDF
-// evaluation gives all three.
+// towards the other end: the scattering value from v's predecessor towards w (vertex_f) and, where the
+// BSDF gives them with it (BSDF::eval; phase functions always), the two solid-angle densities
+// join_densities needs there, of w given v.wo and of v.wo given w (has_pdfs; else join_densities asks
+// the BSDF).
 struct EndScattering {
     SampledSpectrum f;
     float pdf_w = 0, pdf_wo = 0;
+    bool has_pdfs = false;
 };
 EndScattering end_scattering(const PathVertex& v, Vector3f w, TransportMode mode);
 // at_qs / at_pt (optional): the ends' end_scattering towards each other, for the densities at qs and pt
