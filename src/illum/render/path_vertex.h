@@ -186,7 +186,8 @@ int trace_light_subpath(const PathContext& ctx, float u_light, Point2f u_pos, Po
 // Strategy s = 1 of a connection at camera vertex pt (next-event estimation): a light chosen by the scene's
 // light sampler with u_light and a point on it sampled towards pt with u. Fills *sampled (the light vertex,
 // whose pdf_fwd is its origin density, for the MIS weights) and *l = β_pt f |cos| T L / p, and *at_pt
-// (when given) with pt's end_scattering towards the light; false when no light point was sampled.
+// (when given) with pt's end_scattering towards the light; false when no light point was sampled (or, with
+// at_pt, when it coincides with pt).
 bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u_light, Point2f u,
                            int channel, PathVertex* sampled, SampledSpectrum* l,
                            EndScattering* at_pt = nullptr);
