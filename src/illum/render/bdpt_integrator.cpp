@@ -141,8 +141,7 @@ SampledSpectrum connect(const PathContext& ctx, const Subpaths& sp, int s, int t
 
     SampledSpectrum l(0.0f);
     bool have_sampled = false;
-    EndScattering at_qs, at_pt;
-    const EndScattering *qs_end = nullptr, *pt_end = nullptr;
+    EndScattering at_qs, at_pt; // what connect evaluates at the ends (none: has_pdfs false)
     if (s == 0) {
         const PathVertex& pt = cv[t - 1];
         if (pt.is_light()) l = vertex_le(ctx, pt, cv[t - 2]) * pt.beta;
@@ -167,7 +166,6 @@ SampledSpectrum connect(const PathContext& ctx, const Subpaths& sp, int s, int t
         const Segment to_camera = segment(qs, *sampled);
         if (!(to_camera.inv_d2 > 0)) return SampledSpectrum(0.0f);
         at_qs = end_scattering(qs, to_camera.w, TransportMode::Importance);
-        qs_end = &at_qs;
         l = qs.beta * at_qs.f * sampled->beta;
         if (qs.on_surface()) l *= std::abs(dot(cs->wi, Vector3f(qs.ns)));
         if (!l.is_black()) l *= connection_transmittance(ctx, qs, *sampled, ch);
@@ -178,7 +176,6 @@ SampledSpectrum connect(const PathContext& ctx, const Subpaths& sp, int s, int t
         Point2f u = sampler.get_2d();
         if (!connect_sampled_light(ctx, pt, u_light, u, ch, sampled, &l, &at_pt))
             return SampledSpectrum(0.0f);
-        pt_end = &at_pt;
         have_sampled = true;
     } else {
         const PathVertex& qs = lv[s - 1];
@@ -188,15 +185,13 @@ SampledSpectrum connect(const PathContext& ctx, const Subpaths& sp, int s, int t
         if (!(joint.inv_d2 > 0)) return SampledSpectrum(0.0f);
         at_qs = end_scattering(qs, joint.w, TransportMode::Importance);
         at_pt = end_scattering(pt, -joint.w, TransportMode::Radiance);
-        qs_end = &at_qs;
-        pt_end = &at_pt;
         l = qs.beta * at_qs.f * at_pt.f * pt.beta;
         if (!l.is_black()) l *= connect_g(ctx, qs, pt, joint, ch);
     }
     if (l.is_black()) return l;
 
     // The strategy's sampled endpoint stands in for the subpath's own while the weight is computed.
-    const float w = mis_weight(ctx, lv, cv, s, t, have_sampled ? sampled : nullptr, qs_end, pt_end,
+    const float w = mis_weight(ctx, lv, cv, s, t, have_sampled ? sampled : nullptr, &at_qs, &at_pt,
                                sp.light_tail.data(), sp.camera_tail.data());
     *weight = w;
     return l * w;

@@ -120,6 +120,18 @@ float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vecto
     return vertex_pdf(ctx, v, wp, wn, density_target(next), inv_d2);
 }
 
+namespace {
+
+// A solid-angle density at a vertex of the unit direction wn towards `next`, per unit area there (the cosine
+// at next when on a surface, 1 / d²; unchanged at infinity), with the direction and distance at hand.
+float area_density(float pdf, Vector3f wn, const DensityTarget& next, float inv_d2) {
+    if (next.infinite) return pdf;
+    if (next.ng != Normal3f{}) pdf *= std::abs(dot(Vector3f(next.ng), wn));
+    return pdf * inv_d2;
+}
+
+} // namespace
+
 float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vector3f wn,
                  const DensityTarget& next, float inv_d2) {
     float pdf = 0;
@@ -137,10 +149,7 @@ float vertex_pdf(const PathContext& ctx, const PathVertex& v, Vector3f wp, Vecto
         pdf = v.phase.p(dot(-wp, wn));
         break;
     }
-    // Per unit area at next (convert_density), with the direction already at hand.
-    if (next.infinite) return pdf;
-    if (next.ng != Normal3f{}) pdf *= std::abs(dot(Vector3f(next.ng), wn));
-    return pdf * inv_d2;
+    return area_density(pdf, wn, next, inv_d2);
 }
 
 float vertex_pdf(const PathContext& ctx, const PathVertex& v, const PathVertex* prev,
@@ -185,14 +194,6 @@ EndScattering end_scattering(const PathVertex& v, Vector3f w, TransportMode mode
 
 namespace {
 
-// A solid-angle density at v of the unit direction wn towards `next`, per unit area there (vertex_pdf's
-// conversion).
-float area_density(float pdf, Vector3f wn, const PathVertex& next, float inv_d2) {
-    if (next.is_infinite_light()) return pdf;
-    if (next.ng != Normal3f{}) pdf *= std::abs(dot(Vector3f(next.ng), wn));
-    return pdf * inv_d2;
-}
-
 // Whether an end's end_scattering stands for vertex_pdf there: it holds the densities, at a surface or
 // medium vertex entered from a predecessor.
 bool scatters(const EndScattering* e, const PathVertex& v, const PathVertex* v_m) {
@@ -216,41 +217,21 @@ JoinDensities join_densities(const PathContext& ctx, const PathVertex* qs, const
         return j;
     }
     const bool qs_given = scatters(at_qs, *qs, qs_m), pt_given = scatters(at_pt, pt, pt_m);
-    j.pt_rev = qs_given ? area_density(at_qs->pdf_w, -joint.w, pt, joint.inv_d2)
+    j.pt_rev = qs_given ? area_density(at_qs->pdf_w, -joint.w, density_target(pt), joint.inv_d2)
                         : vertex_pdf(ctx, *qs, qs_m ? qs->wo : Vector3f{}, -joint.w, pt, joint.inv_d2);
-    j.qs_rev = pt_given ? area_density(at_pt->pdf_w, joint.w, *qs, joint.inv_d2)
+    j.qs_rev = pt_given ? area_density(at_pt->pdf_w, joint.w, density_target(*qs), joint.inv_d2)
                         : vertex_pdf(ctx, pt, pt_m ? pt.wo : Vector3f{}, joint.w, *qs, joint.inv_d2);
     if (pt_m) {
         const float inv_d2 = inv_distance_squared(pt, *pt_m);
-        j.pt_m_rev = pt_given ? area_density(at_pt->pdf_wo, pt.wo, *pt_m, inv_d2)
+        j.pt_m_rev = pt_given ? area_density(at_pt->pdf_wo, pt.wo, density_target(*pt_m), inv_d2)
                               : vertex_pdf(ctx, pt, joint.w, pt.wo, *pt_m, inv_d2);
     }
     if (qs_m) {
         const float inv_d2 = inv_distance_squared(*qs, *qs_m);
-        j.qs_m_rev = qs_given ? area_density(at_qs->pdf_wo, qs->wo, *qs_m, inv_d2)
+        j.qs_m_rev = qs_given ? area_density(at_qs->pdf_wo, qs->wo, density_target(*qs_m), inv_d2)
                               : vertex_pdf(ctx, *qs, -joint.w, qs->wo, *qs_m, inv_d2);
     }
     return j;
-}
-
-SampledSpectrum vertex_f(const PathVertex& v, Vector3f wi, TransportMode mode) {
-    switch (v.type) {
-    case VertexType::Surface: {
-        SampledSpectrum f = v.bsdf.f(v.wo, wi, mode).s;
-        if (mode == TransportMode::Importance) f *= shading_normal_adjoint(v.hit, v.wo, wi);
-        return f;
-    }
-    case VertexType::Medium:
-        return SampledSpectrum(v.phase.p(dot(-v.wo, wi)));
-    default:
-        return SampledSpectrum(0.0f);
-    }
-}
-
-SampledSpectrum vertex_f(const PathVertex& v, const PathVertex& next, TransportMode mode) {
-    Segment to_next = segment(v, next);
-    if (!(to_next.inv_d2 > 0)) return SampledSpectrum(0.0f);
-    return vertex_f(v, to_next.w, mode);
 }
 
 SampledSpectrum vertex_le(const PathContext& ctx, const PathVertex& v, const PathVertex& towards) {
@@ -492,14 +473,10 @@ bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u
     // The biradiance is L / p_ω (or I / r² for a point): the light's end of the path over its density.
     sampled->beta = ls->biradiance.s / pmf;
     sampled->pdf_fwd = pdf_light_origin(ctx, *sampled, pt);
-    if (at_pt) {
-        const Segment to_light = segment(pt, *sampled);
-        if (!(to_light.inv_d2 > 0)) return false;
-        *at_pt = end_scattering(pt, to_light.w, TransportMode::Radiance);
-        *l = pt.beta * at_pt->f * sampled->beta;
-    } else {
-        *l = pt.beta * vertex_f(pt, *sampled, TransportMode::Radiance) * sampled->beta;
-    }
+    const Segment to_light = segment(pt, *sampled);
+    if (!(to_light.inv_d2 > 0)) return false;
+    *at_pt = end_scattering(pt, to_light.w, TransportMode::Radiance);
+    *l = pt.beta * at_pt->f * sampled->beta;
     if (pt.on_surface()) *l *= std::abs(dot(ls->wi, Vector3f(pt.ns)));
     if (!l->is_black()) *l *= connection_transmittance(ctx, pt, *sampled, channel);
     return true;

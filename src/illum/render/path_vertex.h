@@ -136,7 +136,8 @@ struct JoinDensities {
     bool joined = true;
 };
 // What a connection reads at one of its ends v, a surface or medium vertex, with w the unit direction
-// towards the other end: the scattering value from v's predecessor towards w (vertex_f) and, where the
+// towards the other end: the scattering value from v's predecessor towards w (f with the adjoint factor in
+// importance mode, or the phase function; without the cosine) and, where the
 // BSDF gives them with it (BSDF::eval; phase functions always), the two solid-angle densities
 // join_densities needs there, of w given v.wo and of v.wo given w (has_pdfs; else join_densities asks
 // the BSDF).
@@ -158,11 +159,6 @@ float pdf_light(const PathContext& ctx, const PathVertex& v, const PathVertex& n
 float pdf_light_origin(const PathContext& ctx, const PathVertex& v, const PathVertex& next);
 // Σ over the infinite lights of pmf · pdf_dir of light travelling along w.
 float infinite_light_density(const PathContext& ctx, Vector3f w);
-// The scattering value at v from its predecessor towards next: f (with the adjoint factor in importance
-// mode) or the phase function. Excludes the cosine.
-SampledSpectrum vertex_f(const PathVertex& v, const PathVertex& next, TransportMode mode);
-// The same towards the unit direction wi.
-SampledSpectrum vertex_f(const PathVertex& v, Vector3f wi, TransportMode mode);
 // Emitted radiance from the light at v towards `towards`.
 SampledSpectrum vertex_le(const PathContext& ctx, const PathVertex& v, const PathVertex& towards);
 
@@ -185,12 +181,10 @@ int trace_light_subpath(const PathContext& ctx, float u_light, Point2f u_pos, Po
                         int channel, PathVertex* path);
 // Strategy s = 1 of a connection at camera vertex pt (next-event estimation): a light chosen by the scene's
 // light sampler with u_light and a point on it sampled towards pt with u. Fills *sampled (the light vertex,
-// whose pdf_fwd is its origin density, for the MIS weights) and *l = β_pt f |cos| T L / p, and *at_pt
-// (when given) with pt's end_scattering towards the light; false when no light point was sampled (or, with
-// at_pt, when it coincides with pt).
+// whose pdf_fwd is its origin density, for the MIS weights), *l = β_pt f |cos| T L / p and *at_pt with
+// pt's end_scattering towards the light; false when no light point was sampled (or it coincides with pt).
 bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u_light, Point2f u,
-                           int channel, PathVertex* sampled, SampledSpectrum* l,
-                           EndScattering* at_pt = nullptr);
+                           int channel, PathVertex* sampled, SampledSpectrum* l, EndScattering* at_pt);
 // The geometry term with transmittance: |cos_a| |cos_b| T / d² (cosines with the shading normals, only at
 // surface vertices), with ab = segment(a, b) (non-degenerate) at hand.
 SampledSpectrum connect_g(const PathContext& ctx, const PathVertex& a, const PathVertex& b, const Segment& ab,

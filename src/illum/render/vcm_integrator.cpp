@@ -359,8 +359,7 @@ SampledSpectrum VcmRender::connect(const PathContext& ctx, Scratch& sc, int s, i
     SampledSpectrum l(0.0f);
     PathVertex& sampled = sc.sampled;
     bool have_sampled = false;
-    EndScattering at_qs, at_pt;
-    const EndScattering* qs_end = nullptr;
+    EndScattering at_qs, at_pt; // what connect evaluates at the ends (none: has_pdfs false)
     if (s == 0) {
         const PathVertex& pt = cv[t - 1];
         if (pt.is_light()) l = vertex_le(ctx, pt, cv[t - 2]) * pt.beta;
@@ -381,13 +380,10 @@ SampledSpectrum VcmRender::connect(const PathContext& ctx, Scratch& sc, int s, i
         if (!(joint.inv_d2 > 0)) return SampledSpectrum(0.0f);
         at_qs = end_scattering(qs, joint.w, TransportMode::Importance);
         at_pt = end_scattering(pt, -joint.w, TransportMode::Radiance);
-        qs_end = &at_qs;
         l = qs.beta * at_qs.f * at_pt.f * pt.beta;
         if (!l.is_black()) l *= connect_g(ctx, qs, pt, joint, ch);
     }
     if (l.is_black()) return l;
-    // s = 0 leaves at_pt unused (pt is on an emitter; its densities are the light's).
-    const EndScattering* pt_end = s > 0 ? &at_pt : nullptr;
 
     // The weight, with the sampled light point standing in for lv[0] (s = 1).
     MisVertex* ml = sc.tmp_l.data();
@@ -397,11 +393,11 @@ SampledSpectrum VcmRender::connect(const PathContext& ctx, Scratch& sc, int s, i
     if (have_sampled) {
         ml[0] = mis_of(sampled);
         delta0 = sampled.is_delta_light();
-        set_join_densities(ctx, &sampled, 1, cv, t, ml, mc, nullptr, pt_end);
+        set_join_densities(ctx, &sampled, 1, cv, t, ml, mc, nullptr, &at_pt);
     } else {
         std::copy(sc.lmis.begin(), sc.lmis.begin() + s, ml);
         if (s == 0) delta0 = false; // an emitter that was hit has an area
-        set_join_densities(ctx, lv, s, cv, t, ml, mc, qs_end, pt_end);
+        set_join_densities(ctx, lv, s, cv, t, ml, mc, &at_qs, &at_pt);
     }
     float sum = technique_sum(ml, s, mc, t, delta0, techniques_, have_sampled ? nullptr : sc.ltail.data(),
                               sc.ctail.data());
