@@ -37,6 +37,23 @@ public:
                  float(xyz[2] / kSpectrumSamples));
         return apply(xyz_matrix_, c);
     }
+    // to_rgb of each unit spectrum e_i at these wavelengths (the columns of its matrix, FilmResponse): in
+    // spectral mode M c̄(λ_i) / (N p(λ_i)), with M the output matrix and c̄ the matching functions (0 where
+    // p(λ_i) = 0); in RGB mode the output matrix's columns (the fourth sample is unused: 0).
+    void unit_responses(const SampledWavelengths& w, Color3 out[kSpectrumSamples]) const {
+        if (!w.spectral()) {
+            for (int i = 0; i < kSpectrumSamples; ++i) {
+                Color3 e(i == 0 ? 1.0f : 0.0f, i == 1 ? 1.0f : 0.0f, i == 2 ? 1.0f : 0.0f);
+                out[i] = identity_ || i == 3 ? e : apply(rgb_matrix_, e);
+            }
+            return;
+        }
+        for (int i = 0; i < kSpectrumSamples; ++i) {
+            const float k = w.pdf[i] != 0 ? 1 / (w.pdf[i] * float(kSpectrumSamples)) : 0.0f;
+            out[i] =
+                apply(xyz_matrix_, Color3(x_(w.lambda[i]) * k, y_(w.lambda[i]) * k, z_(w.lambda[i]) * k));
+        }
+    }
     // A sample's value as the film adds it (pbrt-v4's RGBFilm::AddSample and AddSplat): to_rgb, scaled
     // down, when the largest component of its sensor value (imaging ratio times XYZ, before white
     // balance: pbrt-v4's sensor RGB for "cie1931") exceeds the film's maxcomponentvalue, so that
@@ -80,6 +97,31 @@ private:
     float xyz_from_rgb_[9]; // imaging ratio times XYZ from the output space's RGB (RGB mode's sensor value)
     float max_component_ = std::numeric_limits<float>::infinity();
     DenselySampledSpectrum x_, y_, z_;
+};
+
+// The film's response at one set of wavelengths, for the many values of one sample (a bidirectional sample's
+// estimate and its splats, an SPPM iteration's gathers): Sensor::to_rgb is linear in the spectrum, so it is
+// the 3 × 4 matrix of its responses to the four unit spectra (Sensor::unit_responses), one matrix-vector
+// product per value instead of the colour-matching lookups. Equal to to_rgb within float rounding. film() is
+// to_film: the sensor's own where a maxcomponentvalue makes it non-linear.
+class FilmResponse {
+public:
+    FilmResponse(const Sensor& sensor, const SampledWavelengths& lambda) : sensor_(&sensor), lambda_(lambda) {
+        sensor.unit_responses(lambda, column_);
+        linear_ = !(sensor.max_component_value() < std::numeric_limits<float>::infinity());
+    }
+    Color3 rgb(const SampledSpectrum& s) const {
+        Color3 c = column_[0] * s[0];
+        for (int i = 1; i < kSpectrumSamples; ++i) c += column_[i] * s[i];
+        return c;
+    }
+    Color3 film(const Radiance3& l) const { return linear_ ? rgb(l.s) : sensor_->to_film(l, lambda_); }
+
+private:
+    const Sensor* sensor_;
+    SampledWavelengths lambda_;
+    Color3 column_[kSpectrumSamples];
+    bool linear_ = true;
 };
 
 } // namespace illum

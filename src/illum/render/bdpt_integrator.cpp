@@ -314,6 +314,9 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         subpath_sums(cv, n_camera, true, sp.camera_tail.data());
         subpath_sums(lv, n_light, false, sp.light_tail.data());
 
+        // The wavelengths are final once both subpaths are traced (a dispersive interface terminates the
+        // secondary ones during a walk; connections leave them as they are).
+        const FilmResponse response(scene_.sensor, tc.lambda);
         SampledSpectrum l(0.0f);
         // s = 1 samples a light of its own, so it runs even when the light subpath is empty (a photon that
         // carries nothing: an alpha-masked point, a portal light's photon whose line misses the portal).
@@ -334,15 +337,14 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
                     // pbrt-v4: the weighted contribution, or the unweighted one (the strategy alone).
                     SampledSpectrum v = visualize_weights ? c : (w > 0 ? c / w : SampledSpectrum(0.0f));
                     out.strategy_splats.push_back(
-                        {strategy_index(s, t),
-                         {t == 1 ? p_raster : p_film, scene_.sensor.to_film(Radiance3(v), tc.lambda)}});
+                        {strategy_index(s, t), {t == 1 ? p_raster : p_film, response.film(Radiance3(v))}});
                 }
                 if (t == 1)
-                    out.splats.push_back({p_raster, scene_.sensor.to_film(Radiance3(c), tc.lambda)});
+                    out.splats.push_back({p_raster, response.film(Radiance3(c))});
                 else
                     l += c;
             }
-        out.estimates.push_back({pixel, scene_.sensor.to_film(Radiance3(l), tc.lambda), fs.weight});
+        out.estimates.push_back({pixel, response.film(Radiance3(l)), fs.weight});
     };
 
     std::uint64_t nonfinite = 0;

@@ -33,25 +33,6 @@ constexpr int kTileSize = 16;
 constexpr std::size_t kChunkBudgetBytes = std::size_t(256) << 20; // the per-chunk Φ/M arrays at most
 constexpr int kMaxChunks = 16;
 
-// The film's response to a sampled spectrum at one set of wavelengths: Sensor::to_rgb is linear in the
-// spectrum, so it is the 3 × 4 matrix of its responses to the four unit spectra (one matrix-vector product
-// per photon gather instead of the colour-matching lookups).
-struct FilmResponse {
-    Color3 column[kSpectrumSamples];
-    FilmResponse(const Sensor& sensor, const SampledWavelengths& lambda) {
-        for (int i = 0; i < kSpectrumSamples; ++i) {
-            float e[kSpectrumSamples] = {0, 0, 0, 0};
-            e[i] = 1;
-            column[i] = sensor.to_rgb(Radiance3(SampledSpectrum(e[0], e[1], e[2], e[3])), lambda);
-        }
-    }
-    Color3 operator()(const SampledSpectrum& s) const {
-        Color3 c;
-        for (int i = 0; i < kSpectrumSamples; ++i) c += column[i] * s[i];
-        return c;
-    }
-};
-
 // The radical inverse of i in base 3 (pbrt-v4 picks an SPPM iteration's wavelengths with it).
 float radical_inverse_3(std::uint32_t i) {
     double inv = 1.0 / 3, f = inv, v = 0;
@@ -362,7 +343,7 @@ void SppmRender::photon_pass(int iteration, const SampledWavelengths& pass_lambd
                             SampledSpectrum gathered = vp.beta * vp.bsdf.f(vp.wo, a.wi).s * a.beta;
                             bool terminated = vp.secondary_terminated || a.lambda.secondary_terminated();
                             Color3 c_phi =
-                                terminated ? (*response_terminated_)(gathered) : (*response_)(gathered);
+                                terminated ? response_terminated_->rgb(gathered) : response_->rgb(gathered);
                             if (c_phi.is_finite()) phi[v] += c_phi;
                             ++m[v];
                             ++t.gathers;
