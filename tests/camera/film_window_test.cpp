@@ -131,5 +131,28 @@ TEST(FilmWindow, MaxComponentValueScalesFirefliesDownKeepingTheirHue) {
     EXPECT_GT(x, 1); // clamped, not black
 }
 
+// The film's limit holds for every integrator that adds camera samples to it, whatever the strategy that
+// found the light: the path tracer, BDPT (s = 0) and VCM (its camera pass). SPPM's image is not limited,
+// as in pbrt-v4. RGB and spectral mode.
+TEST(FilmWindow, MaxComponentValueHoldsForTheBidirectionalIntegrators) {
+    for (bool spectral : {false, true})
+        for (const char* integrator : {"path", "bdpt", "vcm"}) {
+            test::RenderSetup setup;
+            setup.integrator = integrator;
+            setup.spectral = spectral;
+            setup.spp = 4;
+            Image free = test::render_pbrt(emitter_scene("40 10 2", ""), setup).image;
+            Image clamped =
+                test::render_pbrt(emitter_scene("40 10 2", "\"float maxcomponentvalue\" 5"), setup).image;
+            const double* to_xyz = RGBColorSpace::srgb().xyz_from_rgb_matrix_f64();
+            Color3 p = clamped(2, 2), f = free(2, 2);
+            double x = to_xyz[0] * p.r + to_xyz[1] * p.g + to_xyz[2] * p.b;
+            double x_free = to_xyz[0] * f.r + to_xyz[1] * f.g + to_xyz[2] * f.b;
+            EXPECT_GT(x_free, 15) << integrator << (spectral ? " spectral" : " rgb");
+            EXPECT_LE(x, 5 * (1 + 1e-4)) << integrator << (spectral ? " spectral" : " rgb");
+            EXPECT_GT(x, 1) << integrator << (spectral ? " spectral" : " rgb"); // limited, not black
+        }
+}
+
 } // namespace
 } // namespace illum

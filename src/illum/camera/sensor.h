@@ -60,19 +60,14 @@ public:
     // component equals it; the hue is kept. Without a limit (the default, +inf) this is to_rgb.
     Color3 to_film(const Radiance3& l, const SampledWavelengths& w) const {
         Color3 c = to_rgb(l, w);
-        if (!(max_component_ < std::numeric_limits<float>::infinity())) return c;
-        Color3 s = sensor_xyz(l, w);
-        float m = std::max(s.r, std::max(s.g, s.b));
-        return m > max_component_ ? c * (max_component_ / m) : c;
+        if (!limited()) return c;
+        return c * limit_scale(sensor_xyz(l, w));
     }
     void set_max_component_value(float v) { max_component_ = v; }
     float max_component_value() const { return max_component_; }
-
-    const RGBColorSpace& output() const { return *output_; }
-    float imaging_ratio() const { return imaging_ratio_; }
-
-private:
-    // Imaging ratio times the sample's XYZ.
+    // Whether the film limits its samples (a finite maxcomponentvalue).
+    bool limited() const { return max_component_ < std::numeric_limits<float>::infinity(); }
+    // Imaging ratio times the sample's XYZ: its sensor value, which maxcomponentvalue limits.
     Color3 sensor_xyz(const Radiance3& l, const SampledWavelengths& w) const {
         if (!w.spectral()) return apply(xyz_from_rgb_, l.rgb());
         SampledSpectrum v = safe_div(l.s, w.pdf_spectrum());
@@ -85,6 +80,18 @@ private:
         double k = double(imaging_ratio_) / kSpectrumSamples;
         return {float(xyz[0] * k), float(xyz[1] * k), float(xyz[2] * k)};
     }
+    // The factor to_film applies to a sample of this sensor value (1 below the limit). A sample whose parts
+    // were found at different wavelength densities (VCM's estimate: its joined and merged parts may have
+    // the secondary wavelengths terminated) has the sum of its parts' sensor values.
+    float limit_scale(Color3 sensor_value) const {
+        float m = std::max(sensor_value.r, std::max(sensor_value.g, sensor_value.b));
+        return m > max_component_ ? max_component_ / m : 1.0f;
+    }
+
+    const RGBColorSpace& output() const { return *output_; }
+    float imaging_ratio() const { return imaging_ratio_; }
+
+private:
     static Color3 apply(const float m[9], Color3 c) {
         return {m[0] * c.r + m[1] * c.g + m[2] * c.b, m[3] * c.r + m[4] * c.g + m[5] * c.b,
                 m[6] * c.r + m[7] * c.g + m[8] * c.b};
@@ -108,7 +115,7 @@ class FilmResponse {
 public:
     FilmResponse(const Sensor& sensor, const SampledWavelengths& lambda) : sensor_(&sensor), lambda_(lambda) {
         sensor.unit_responses(lambda, column_);
-        linear_ = !(sensor.max_component_value() < std::numeric_limits<float>::infinity());
+        linear_ = !sensor.limited();
     }
     Color3 rgb(const SampledSpectrum& s) const {
         Color3 c = column_[0] * s[0];

@@ -281,7 +281,7 @@ void VcmRender::trace_light(std::size_t p, int sample_index, ThreadContext& tc, 
             continue;
         }
         if (!c.is_black())
-            out.splats.push_back({cs->p_raster, scene_.sensor.to_rgb(Radiance3(c), tc.lambda)});
+            out.splats.push_back({cs->p_raster, scene_.sensor.to_film(Radiance3(c), tc.lambda)});
     }
 
     // Stored without their BSDFs (which live in this thread's arena only until the next subpath).
@@ -559,17 +559,26 @@ void VcmRender::trace_camera(int x, int y, int sample_index, ThreadContext& tc, 
         l_merged_terminated += term;
     }
 
-    Color3 value = scene_.sensor.to_rgb(Radiance3(l_own), tc.lambda);
+    // The sample's value, its parts each at the wavelength densities it was found with; the film's
+    // maxcomponentvalue limits the whole sample, as Sensor::to_film limits one (pbrt-v4's RGBFilm).
+    const Sensor& sensor = scene_.sensor;
+    Color3 value = sensor.to_rgb(Radiance3(l_own), tc.lambda);
+    Color3 sensor_value = sensor.limited() ? sensor.sensor_xyz(Radiance3(l_own), tc.lambda) : Color3(0.0f);
+    auto add_part = [&](const SampledSpectrum& part, const SampledWavelengths& lambda) {
+        value += sensor.to_rgb(Radiance3(part), lambda);
+        if (sensor.limited()) sensor_value += sensor.sensor_xyz(Radiance3(part), lambda);
+    };
     if (!l_joined.is_black()) {
         SampledWavelengths lambda = tc.lambda;
         if (light_terminated) lambda.terminate_secondary();
-        value += scene_.sensor.to_rgb(Radiance3(l_joined), lambda);
+        add_part(l_joined, lambda);
     }
     if (!l_merged_terminated.is_black()) {
         SampledWavelengths lambda = tc.lambda;
         lambda.terminate_secondary();
-        value += scene_.sensor.to_rgb(Radiance3(l_merged_terminated), lambda);
+        add_part(l_merged_terminated, lambda);
     }
+    if (sensor.limited()) value *= sensor.limit_scale(sensor_value);
     if (!value.is_finite()) {
         ++*dropped;
         value = Color3(0.0f);
