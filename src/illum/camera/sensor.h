@@ -44,7 +44,7 @@ public:
         if (!w.spectral()) {
             for (int i = 0; i < kSpectrumSamples; ++i) {
                 Color3 e(i == 0 ? 1.0f : 0.0f, i == 1 ? 1.0f : 0.0f, i == 2 ? 1.0f : 0.0f);
-                out[i] = identity_ || i == 3 ? e : apply(rgb_matrix_, e);
+                out[i] = identity_ ? e : apply(rgb_matrix_, e);
             }
             return;
         }
