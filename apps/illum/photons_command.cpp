@@ -81,7 +81,7 @@ void run(const PhotonsArgs& args) {
                                              std::uint64_t(rq.sppm_seed)});
     const std::uint64_t n = std::uint64_t(args.count > 0 ? args.count : sppm.photons_per_iteration());
     // The photon streams of the renderer's first iteration (sppm_integrator.cpp seeds them the same way).
-    PhotonTracer tracer(*scene, max_depth, hash(args.seed, sppm.settings().seed));
+    PhotonTracer tracer(*scene, max_depth);
     const Sampler prototype(SamplerKind::sobol, 1, hash(args.seed, sppm.settings().seed));
     const float share = float(1.0 / double(n));
 

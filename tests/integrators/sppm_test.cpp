@@ -33,7 +33,7 @@ std::string cornell_sppm() {
 // light's cosine-weighted emission gives every photon the same flux π A L, so for one light the standard
 // error is ~0 and the check is exact to float precision.
 void expect_photon_power(const Scene& scene, Color3 expected, const char* what) {
-    PhotonTracer tracer(scene, 5, 1);
+    PhotonTracer tracer(scene, 5);
     Sampler sampler(SamplerKind::sobol, 1, 7);
     const int n = 1 << 16;
     double sum[3] = {0, 0, 0}, sum2[3] = {0, 0, 0};

@@ -40,9 +40,8 @@ struct PhotonArrival {
 class PhotonTracer {
 public:
     // max_depth: surface hits per photon (pbrt-v4's SPPM "maxdepth": a photon is traced through at most
-    // max_depth intersections); seed: the photon streams' seed.
-    PhotonTracer(const Scene& scene, int max_depth, std::uint64_t seed)
-        : scene_(scene), max_depth_(max_depth), seed_(seed) {}
+    // max_depth intersections). The photon streams' seed is the sampler's (start_photon_sample).
+    PhotonTracer(const Scene& scene, int max_depth) : scene_(scene), max_depth_(max_depth) {}
 
     // Starts the sampler at photon `global_index` and emits it; false when the light emits nothing there.
     bool emit(std::uint64_t global_index, const SampledWavelengths& lambda, Sampler& sampler,
@@ -58,7 +57,6 @@ public:
 private:
     const Scene& scene_;
     int max_depth_;
-    std::uint64_t seed_;
 };
 
 // The Sobol sampler of photon streams: one "pixel" far outside any image, the photon's global number as

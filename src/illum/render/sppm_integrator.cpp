@@ -102,7 +102,7 @@ class SppmRender {
 public:
     SppmRender(const Scene& scene, const SppmSettings& s, long long photons, const RenderOptions& o)
         : scene_(scene), settings_(s), options_(o), photons_(std::uint64_t(photons)),
-          tracer_(scene, s.max_depth, hash(o.seed, s.seed)) {}
+          tracer_(scene, s.max_depth) {}
     RenderResult run(SppmStats* stats);
 
 private:
