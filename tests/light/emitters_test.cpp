@@ -299,8 +299,8 @@ TEST(SpotLight, IlluminatedIntervalIsTheConeAlongTheLine) {
         Point3f c(0.75f, 1.8f, 0.3f);
         SpotLight spot(c, axis, Emission(Color3(1.0f)), cone_deg * kPi / 180, 0.05f);
         for (int i = 0; i < 2000; ++i, ++lines) {
-            Point3f o = c + Vector3f(4 * rng.uniform_float() - 2, 4 * rng.uniform_float() - 2,
-                                     4 * rng.uniform_float() - 2);
+            Point3f o = c + Vector3f{4 * rng.uniform_float() - 2, 4 * rng.uniform_float() - 2,
+                                     4 * rng.uniform_float() - 2};
             Vector3f d = normalize(sample_uniform_sphere({rng.uniform_float(), rng.uniform_float()}));
             float t0 = 0, t1 = 6;
             bool any = spot.illuminated_interval(o, d, &t0, &t1);

@@ -74,13 +74,13 @@ TEST(MajorantDDA, SegmentsAreContiguousCoverTheClippedRangeAndBoundTheDensity) {
     PCG32 rng(99);
     int hits = 0, checked_points = 0;
     for (int i = 0; i < 400; ++i) {
-        Point3f mo(-2 + 4 * rng.uniform_float(), -1 + 4 * rng.uniform_float(),
-                   -0.5f + 3 * rng.uniform_float());
+        Point3f mo{-2 + 4 * rng.uniform_float(), -1 + 4 * rng.uniform_float(),
+                   -0.5f + 3 * rng.uniform_float()};
         // Half of the rays aim into the box, the others go anywhere.
         Vector3f dir = random_direction(rng);
         if (i % 2 == 0) {
             Point3f target =
-                g.p0 + Vector3f(2 * rng.uniform_float(), 2 * rng.uniform_float(), rng.uniform_float());
+                g.p0 + Vector3f{2 * rng.uniform_float(), 2 * rng.uniform_float(), rng.uniform_float()};
             dir = g.t(target) - g.t(mo);
             dir = dir / length(dir);
         }
@@ -240,7 +240,7 @@ TEST(Transmittance, UniformGridMatchesTheIntegratedDensity) {
     for (int ray = 0; ray < 6; ++ray) {
         // From outside the box towards a point inside it; every other ray stops inside.
         Point3f target =
-            g.p0 + Vector3f(2 * rng.uniform_float(), 2 * rng.uniform_float(), rng.uniform_float());
+            g.p0 + Vector3f{2 * rng.uniform_float(), 2 * rng.uniform_float(), rng.uniform_float()};
         Point3f from = target + random_direction(rng) * 4;
         Vector3f dir = g.t(target) - g.t(from);
         float dist = length(dir);

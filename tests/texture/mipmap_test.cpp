@@ -26,7 +26,7 @@ std::shared_ptr<const Image> random_image(int w, int h, std::uint64_t seed) {
     PCG32 rng(seed);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
-            (*im)(x, y) = Color3(rng.uniform_float(), rng.uniform_float(), rng.uniform_float());
+            (*im)(x, y) = Color3{rng.uniform_float(), rng.uniform_float(), rng.uniform_float()};
     return im;
 }
 

@@ -53,7 +53,7 @@ LobeGrid sample_lobe(const BxDF& bxdf, Vector3f wi, const LobeOptions& o) {
     PCG32 rng(o.seed);
     for (int i = 0; i < o.spike_samples; ++i) {
         float uc = (i + 0.5f) / float(o.spike_samples);
-        Point2f u(rng.uniform_float(), rng.uniform_float());
+        Point2f u{rng.uniform_float(), rng.uniform_float()}; // braces: drawn left to right
         auto s = bxdf.sample(wi, uc, u, TransportMode::Importance);
         if (!s || !s->is_specular() || !(s->pdf.value > 0)) continue;
         Color3 w = s->weight().rgb();

@@ -44,7 +44,7 @@ WeightedHistogramResult weighted_histogram_test(const BxDF& bxdf, Vector3f wo, T
     PCG32 rng(seed, 0x5A3);
     for (int i = 0; i < samples; ++i) {
         float uc = rng.uniform_float();
-        Point2f u(rng.uniform_float(), rng.uniform_float());
+        Point2f u{rng.uniform_float(), rng.uniform_float()}; // braces: drawn left to right
         auto s = bxdf.sample(wo, uc, u, mode);
         if (!s || s->is_specular() || !(s->pdf.value > 0) || s->wi.z * side <= 0) continue;
         a[bin_of(s->wi)].add(scalar(s->weight().rgb()));

@@ -51,6 +51,15 @@ struct SplitMix64 {
         return {a, uniform()};
     }
 };
+// model.sample(w, uc, u, rest...) with uc drawn before u. (As two arguments of the call, the order of the
+// draws was the compiler's: g++ and clang++ evaluate arguments in opposite orders, and so rendered different
+// images of the same layered scene.)
+template <class Model, class... Rest>
+auto sample_event(const Model& model, Vector3f w, SplitMix64& rng, Rest... rest) {
+    const float uc = rng.uniform();
+    const Point2f u = rng.uniform2();
+    return model.sample(w, uc, u, rest...);
+}
 inline std::uint64_t hash_floats(std::initializer_list<float> v) {
     std::uint64_t h = 0x243F6A8885A308D3ull;
     for (float x : v) {
@@ -127,9 +136,9 @@ public:
         // The coat's own reflection (zero for a smooth coat: a delta).
         Bsdf3 sum = coat_.f(wo, wi, mode) * float(samples_);
         for (int s = 0; s < samples_; ++s) {
-            auto wos = coat_.sample(wo, r(), r2(), mode, Lobes::Transmission);
+            auto wos = sample_event(coat_, wo, rng, mode, Lobes::Transmission);
             if (!usable(wos)) continue;
-            auto wis = coat_.sample(wi, r(), r2(), adjoint(mode), Lobes::Transmission);
+            auto wis = sample_event(coat_, wi, rng, adjoint(mode), Lobes::Transmission);
             if (!usable(wis)) continue;
             SampledSpectrum beta = wos->weight();
             SampledSpectrum exit_weight = wis->f / wis->pdf; // without the cosine, which the event gives
@@ -170,7 +179,7 @@ public:
                 if (z == h) {
                     // At the coat from below: internal reflection continues the walk (transmission is
                     // counted by the next-event estimates).
-                    auto rs = coat_.sample(-w, r(), r2(), mode, Lobes::Reflection);
+                    auto rs = sample_event(coat_, -w, rng, mode, Lobes::Reflection);
                     if (!usable(rs)) break;
                     beta *= rs->weight();
                     w = rs->wi;
@@ -186,7 +195,7 @@ public:
                                (std::abs(exit_dir.z) * wt * layer_transmittance(h, exit_dir));
                     }
                 }
-                auto bs = base_.sample(-w, r(), r2(), mode);
+                auto bs = sample_event(base_, -w, rng, mode);
                 if (!usable(bs) || bs->wi.z <= 0) break;
                 beta *= bs->weight();
                 w = bs->wi;
@@ -252,7 +261,7 @@ public:
                 z = std::clamp(zp, 0.0f, h);
             }
             std::optional<BSDFSample> s =
-                z == 0 ? base_.sample(-w, r(), r2(), mode) : coat_.sample(-w, r(), r2(), mode);
+                z == 0 ? sample_event(base_, -w, rng, mode) : sample_event(coat_, -w, rng, mode);
             if (!usable(s)) return std::nullopt;
             f *= s->f.s;
             pdf *= s->pdf.value;
@@ -279,14 +288,12 @@ public:
             wi = -wi;
         }
         SplitMix64 rng{hash_floats({wi.x, wi.y, wi.z, wo.x, wo.y, wo.z})};
-        auto r = [&] { return rng.uniform(); };
-        auto r2 = [&] { return rng.uniform2(); };
         // The coat reflects with probability about R(cos θo) (exactly, for a smooth coat); the rest enters.
         float enter = 1 - coat_.fresnel_reflectance(wo.z);
         SolidAnglePdf through(0);
         for (int s = 0; s < samples_; ++s) {
-            auto wos = coat_.sample(wo, r(), r2(), mode, Lobes::Transmission);
-            auto wis = coat_.sample(wi, r(), r2(), adjoint(mode), Lobes::Transmission);
+            auto wos = sample_event(coat_, wo, rng, mode, Lobes::Transmission);
+            auto wis = sample_event(coat_, wi, rng, adjoint(mode), Lobes::Transmission);
             if (!usable(wos) || !usable(wis)) continue;
             Vector3f down = wos->wi, exit_dir = -wis->wi;
             if (coat_.is_specular()) {
@@ -294,7 +301,7 @@ public:
                 continue;
             }
             // Two estimates of the density of the base's direction through a rough coat, by MIS.
-            auto bs = base_.sample(-down, r(), r2(), mode);
+            auto bs = sample_event(base_, -down, rng, mode);
             if (!usable(bs)) continue;
             if (base_specular_) {
                 through += coat_.pdf(-bs->wi, wi, mode);

@@ -76,7 +76,9 @@ Radiance3 DirectIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         // A specular surface: follow the reflection/refraction.
         if (max_depth_ >= 0 && depth >= max_depth_) break;
         ++depth;
-        auto bs = bsdf.sample(hit.wo, tc.sampler.get_1d(), tc.sampler.get_2d());
+        const float uc = tc.sampler.get_1d(); // before u (a call's arguments have no order)
+        const Point2f u = tc.sampler.get_2d();
+        auto bs = bsdf.sample(hit.wo, uc, u);
         if (!bs) break;
         beta *= throughput_weight(bs->f, abs_dot(bs->wi, hit.ns), bs->pdf);
         ray = hit.spawn_ray(bs->wi);

@@ -87,7 +87,9 @@ std::uint64_t PhotonTracer::trace(std::uint64_t global_index, SampledWavelengths
             continue;
         }
         if (bsdf.flags() == kNone) break;
-        auto bs = bsdf.sample(-ray.d, sampler.get_1d(), sampler.get_2d(), TransportMode::Importance);
+        const float uc = sampler.get_1d(); // before u (a call's arguments have no order)
+        const Point2f u = sampler.get_2d();
+        auto bs = bsdf.sample(-ray.d, uc, u, TransportMode::Importance);
         if (!bs) break;
         SampledSpectrum beta_new = beta * throughput_weight(bs->f, abs_dot(bs->wi, hit.ns), bs->pdf);
         // Russian roulette: continue with probability min(1, max β_new / max β), reweighted by it.
