@@ -76,9 +76,9 @@ Radiance3 DirectIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         // A specular surface: follow the reflection/refraction.
         if (max_depth_ >= 0 && depth >= max_depth_) break;
         ++depth;
-        const float uc = tc.sampler.get_1d(); // before u (a call's arguments have no order)
-        const Point2f u = tc.sampler.get_2d();
-        auto bs = bsdf.sample(hit.wo, uc, u);
+        const float u_lobe = tc.sampler.get_1d(); // before u_dir (a call's arguments have no order)
+        const Point2f u_dir = tc.sampler.get_2d();
+        auto bs = bsdf.sample(hit.wo, u_lobe, u_dir);
         if (!bs) break;
         beta *= throughput_weight(bs->f, abs_dot(bs->wi, hit.ns), bs->pdf);
         ray = hit.spawn_ray(bs->wi);

@@ -87,9 +87,9 @@ std::uint64_t PhotonTracer::trace(std::uint64_t global_index, SampledWavelengths
             continue;
         }
         if (bsdf.flags() == kNone) break;
-        const float uc = sampler.get_1d(); // before u (a call's arguments have no order)
-        const Point2f u = sampler.get_2d();
-        auto bs = bsdf.sample(-ray.d, uc, u, TransportMode::Importance);
+        const float u_lobe = sampler.get_1d(); // before u_dir (a call's arguments have no order)
+        const Point2f u_dir = sampler.get_2d();
+        auto bs = bsdf.sample(-ray.d, u_lobe, u_dir, TransportMode::Importance);
         if (!bs) break;
         SampledSpectrum beta_new = beta * throughput_weight(bs->f, abs_dot(bs->wi, hit.ns), bs->pdf);
         // Russian roulette: continue with probability min(1, max β_new / max β), reweighted by it.
