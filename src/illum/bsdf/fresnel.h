@@ -22,18 +22,34 @@ namespace illum {
 // Exact unpolarised Fresnel reflectance of a dielectric interface. eta = n_inside / n_outside, the
 // inside being -z; cos_i < 0 means the light arrives from inside (then η is inverted). Total internal
 // reflection gives 1.
+//
+// Written with g = η cos θt = sqrt(η² − 1 + cos² θi) (Walter et al. 2007, "Microfacet Models for
+// Refraction through Rough Surfaces", eq. 22): r_perp = (c − g)/(c + g), r_par = (η² c − g)/(η² c + g)
+// with c = cos θi, one square root and two independent divisions. From inside (relative index 1/η) both
+// ratios are scaled by η: G = sqrt(1 − η² sin² θi), r_perp = (η c − G)/(η c + G),
+// r_par = (c − η G)/(c + η G).
 inline float fresnel_dielectric(float cos_i, float eta) {
     cos_i = std::clamp(cos_i, -1.0f, 1.0f);
-    if (cos_i < 0) {
-        eta = 1 / eta;
-        cos_i = -cos_i;
+    float a, b, p, q; // r_perp = a / b, r_par = p / q
+    if (cos_i >= 0) {
+        const float g2 = eta * eta - 1 + cos_i * cos_i;
+        if (g2 <= 0) return 1;
+        const float g = std::sqrt(g2), e2c = eta * eta * cos_i;
+        a = cos_i - g;
+        b = cos_i + g;
+        p = e2c - g;
+        q = e2c + g;
+    } else {
+        const float c = -cos_i;
+        const float g2 = 1 - eta * eta * (1 - c * c);
+        if (g2 <= 0) return 1;
+        const float g = std::sqrt(g2), ec = eta * c, eg = eta * g;
+        a = ec - g;
+        b = ec + g;
+        p = c - eg;
+        q = c + eg;
     }
-    float sin2_t = (1 - cos_i * cos_i) / (eta * eta);
-    if (sin2_t >= 1) return 1;
-    float cos_t = safe_sqrt(1 - sin2_t);
-    float r_par = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    float r_perp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    return 0.5f * (r_par * r_par + r_perp * r_perp);
+    return 0.5f * (sqr(a / b) + sqr(p / q));
 }
 
 // Exact unpolarised Fresnel reflectance of a conductor of complex relative index eta + i k, for light

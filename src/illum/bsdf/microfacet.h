@@ -133,16 +133,20 @@ private:
 // ratio n_t / n_i actually used.
 inline bool refract(Vector3f w, Vector3f n, float eta, float* etap, Vector3f* wt) {
     float cos_i = dot(n, w);
+    // One division: the relative index n_t / n_i used and its inverse.
+    const float inv = 1 / eta;
+    float inv_eta = inv;
     if (cos_i < 0) {
-        eta = 1 / eta;
+        inv_eta = eta;
+        eta = inv;
         cos_i = -cos_i;
         n = -n;
     }
     float sin2_i = std::max(0.0f, 1 - cos_i * cos_i);
-    float sin2_t = sin2_i / (eta * eta);
+    float sin2_t = sin2_i * (inv_eta * inv_eta);
     if (sin2_t >= 1) return false;
     float cos_t = std::sqrt(1 - sin2_t);
-    *wt = -w / eta + n * (cos_i / eta - cos_t);
+    *wt = -w * inv_eta + n * (cos_i * inv_eta - cos_t);
     if (etap) *etap = eta;
     return true;
 }
