@@ -5,6 +5,8 @@
 
 #include "illum/analysis/audit.h"
 #include "illum/bsdf/registry.h"
+#include "illum/math/rng.h"
+#include "illum/math/warp.h"
 
 namespace illum {
 namespace {
@@ -26,6 +28,31 @@ TEST_P(AuditModel, PassesEveryCheckOverItsGrid) {
         // Every check that can run does run: physical non-delta models run the chi-square test.
         if (!model.delta && !model.stochastic) {
             EXPECT_GT(r.chi2_tests, 0) << r.model;
+        }
+    }
+}
+
+// A model that says its sample() does not read uc (reads_lobe_sample() false, so the integrators leave that
+// sampler dimension uncomputed) must sample the same direction, value and density for any uc.
+TEST_P(AuditModel, IgnoresTheLobeSampleWhereItSaysSo) {
+    const ModelSpec& model = find_bxdf_model(GetParam());
+    for (const AuditCase& c : model.audit_grid) {
+        std::unique_ptr<BxDF> bxdf = model.make(resolve_params(model, c.params));
+        if (bxdf->reads_lobe_sample()) continue;
+        PCG32 rng(7);
+        for (int i = 0; i < 500; ++i) {
+            const Point2f uw{rng.uniform_float(), rng.uniform_float()},
+                u{rng.uniform_float(), rng.uniform_float()};
+            Vector3f wo = sample_uniform_sphere(uw);
+            if (wo.z == 0) continue;
+            for (TransportMode mode : {TransportMode::Radiance, TransportMode::Importance}) {
+                auto a = bxdf->sample(wo, 0.01f, u, mode), b = bxdf->sample(wo, 0.99f, u, mode);
+                ASSERT_EQ(bool(a), bool(b)) << model.name;
+                if (!a) continue;
+                EXPECT_EQ(a->wi, b->wi) << model.name;
+                EXPECT_EQ(a->pdf.value, b->pdf.value) << model.name;
+                for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_EQ(a->f.s[k], b->f.s[k]) << model.name;
+            }
         }
     }
 }

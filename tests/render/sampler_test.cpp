@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "math/stat_util.h"
@@ -344,6 +345,37 @@ TEST(Sampler, SkippingA2DPairLeavesTheRestOfTheSequence) {
                 EXPECT_EQ(pa.y, pb.y) << sampler_kind_name(kind) << " " << index;
                 EXPECT_EQ(a.get_1d(), b.get_1d()) << sampler_kind_name(kind) << " " << index;
             }
+        }
+    }
+}
+
+TEST(Sampler, DrawsNotReadLeaveTheRestOfTheSequence) {
+    // get_1d_if(false) / get_2d_if(false) (a one-lobe BSDF's lobe choice, a pinhole's lens point) pass their
+    // dimensions over: every later draw is the one get_1d() / get_2d() would have left, also past halton's
+    // last prime, where its dimensions wrap; a draw that is read is get_1d()'s / get_2d()'s.
+    for (SamplerKind kind :
+         {SamplerKind::independent, SamplerKind::sobol, SamplerKind::zsobol, SamplerKind::paddedsobol,
+          SamplerKind::halton, SamplerKind::pmj02bn, SamplerKind::stratified}) {
+        Sampler a(kind, 16, 7), b(kind, 16, 7);
+        for (int index : {0, 5, 15}) {
+            a.start_pixel_sample({3, 4}, index);
+            b.start_pixel_sample({3, 4}, index);
+            (void)a.get_pixel_2d();
+            (void)b.get_pixel_2d();
+            for (int k = 0; k < 700; ++k) {
+                const bool read = k % 3 == 0;
+                const std::string where = std::string(sampler_kind_name(kind)) + " " + std::to_string(index) +
+                                          " " + std::to_string(k);
+                const float a1 = a.get_1d(), b1 = b.get_1d_if(read);
+                if (read) EXPECT_EQ(a1, b1) << where;
+                const Point2f a2 = a.get_2d(), b2 = b.get_2d_if(read);
+                if (read) EXPECT_EQ(a2.x, b2.x) << where;
+                if (read) EXPECT_EQ(a2.y, b2.y) << where;
+            }
+            EXPECT_EQ(a.get_1d(), b.get_1d()) << sampler_kind_name(kind);
+            const Point2f a2 = a.get_2d(), b2 = b.get_2d();
+            EXPECT_EQ(a2.x, b2.x) << sampler_kind_name(kind);
+            EXPECT_EQ(a2.y, b2.y) << sampler_kind_name(kind);
         }
     }
 }

@@ -81,6 +81,10 @@ public:
     virtual Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode mode) const = 0;
     // uc picks a lobe, u picks a direction in it. Returns nothing when no direction is sampled.
     virtual std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const = 0;
+    // Whether sample() reads uc. A model with one lobe does not, and its caller may then leave the sampler's
+    // dimension for uc uncomputed (Sampler::get_1d_if). The audit checks that such a model's samples do not
+    // depend on uc.
+    virtual bool reads_lobe_sample() const { return true; }
     virtual SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode mode) const = 0;
     // f (wo.z and wi.z nonzero) and, in a model that computes them with f at little extra cost, the two
     // densities (has_pdfs): the values f() and pdf() give. By default f alone: a caller that needs the
@@ -98,6 +102,7 @@ public:
     explicit operator bool() const { return bxdf_ != nullptr; }
     const BxDF* bxdf() const { return bxdf_; }
     const Frame& frame() const { return frame_; }
+    bool reads_lobe_sample() const { return bxdf_->reads_lobe_sample(); }
     std::uint8_t flags() const { return bxdf_->flags(); }
     bool is_non_specular() const { return (flags() & (kDiffuse | kGlossy)) != 0; }
 

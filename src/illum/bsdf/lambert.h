@@ -17,6 +17,8 @@ public:
         return Bsdf3(reflectance_ * kInvPi);
     }
 
+    bool reads_lobe_sample() const override { return false; }
+
     std::optional<BSDFSample> sample(Vector3f wo, float, Point2f u, TransportMode) const override {
         Vector3f wi = sample_cosine_hemisphere(u);
         if (wo.z < 0) wi.z = -wi.z;

@@ -67,6 +67,7 @@ public:
     std::uint8_t flags() const override { return kGlossyReflection; }
     Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode mode) const override;
     std::optional<BSDFSample> sample(Vector3f wo, float uc, Point2f u, TransportMode mode) const override;
+    bool reads_lobe_sample() const override { return false; }
     SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode mode) const override;
 
 private:

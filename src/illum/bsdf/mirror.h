@@ -16,6 +16,7 @@ public:
     std::uint8_t flags() const override { return kSpecularReflection; }
     Bsdf3 f(Vector3f, Vector3f, TransportMode) const override { return {}; }
     SolidAnglePdf pdf(Vector3f, Vector3f, TransportMode) const override { return SolidAnglePdf(0); }
+    bool reads_lobe_sample() const override { return false; }
     std::optional<BSDFSample> sample(Vector3f wo, float, Point2f, TransportMode) const override {
         Vector3f wi = reflect_z(wo);
         if (wi.z == 0) return std::nullopt;

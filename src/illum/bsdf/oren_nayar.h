@@ -46,6 +46,8 @@ public:
         return Bsdf3(reflectance_ * (kInvPi * (a_ + b_ * max_cos * sin_alpha * tan_beta)));
     }
 
+    bool reads_lobe_sample() const override { return false; }
+
     std::optional<BSDFSample> sample(Vector3f wo, float, Point2f u, TransportMode mode) const override {
         Vector3f wi = sample_cosine_hemisphere(u);
         if (wo.z < 0) wi.z = -wi.z;

@@ -45,6 +45,8 @@ public:
         return Bsdf3(F * (distrib_.D(h) * distrib_.G(wo, wi) / (4 * co * ci)));
     }
 
+    bool reads_lobe_sample() const override { return false; }
+
     std::optional<BSDFSample> sample(Vector3f wo, float, Point2f u, TransportMode) const override {
         if (wo.z == 0) return std::nullopt;
         Vector3f wm = distrib_.sample_wm(wo, u);

@@ -28,6 +28,7 @@ public:
     SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode mode) const override {
         return rgb_->pdf(wo, wi, mode);
     }
+    bool reads_lobe_sample() const override { return rgb_->reads_lobe_sample(); }
 
 private:
     const BxDF* rgb_;

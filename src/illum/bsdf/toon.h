@@ -38,6 +38,7 @@ public:
         if (length_squared(h) > 0 && std::abs(normalize(h).z) >= cos_highlight_) v += ks_ * (kInvPi / c);
         return Bsdf3(v);
     }
+    bool reads_lobe_sample() const override { return false; }
     std::optional<BSDFSample> sample(Vector3f wo, float, Point2f u, TransportMode mode) const override {
         Vector3f wi = sample_uniform_hemisphere(u);
         if (wo.z < 0) wi.z = -wi.z;

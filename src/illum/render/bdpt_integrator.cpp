@@ -148,7 +148,7 @@ SampledSpectrum connect(const PathContext& ctx, const Subpaths& sp, int s, int t
     } else if (t == 1) {
         const PathVertex& qs = lv[s - 1];
         if (camera_delta || !qs.is_connectible()) return SampledSpectrum(0.0f);
-        Point2f u = sampler.get_2d();
+        Point2f u = sampler.get_2d_if(scene.camera->uses_lens_sample());
         std::optional<CameraWiSample> cs = scene.camera_sample_wi(qs.p, u, ctx.time);
         if (!cs) return SampledSpectrum(0.0f);
         *p_raster = cs->p_raster;
@@ -268,7 +268,7 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         tc.arena.reset();
         FilterSample fs = scene_.pixel_filter_sample(sampler.get_pixel_2d());
         Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
-        Point2f u_lens = sampler.get_2d();
+        Point2f u_lens = sampler.get_2d_if(camera.uses_lens_sample());
         tc.lambda = spectral ? SampledWavelengths::sample_visible(scene_.wavelength_sample(sampler.get_1d()),
                                                                   scene_.color_space)
                              : SampledWavelengths::rgb_mode();

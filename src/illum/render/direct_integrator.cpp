@@ -8,7 +8,7 @@ Radiance3 DirectIntegrator::reflected_from(const Light& light, const SurfaceHit&
     Radiance3 l;
     LightSampleContext ctx(hit);
     Point2f u_light = tc.sampler.get_2d();
-    float u_lobe = tc.sampler.get_1d();
+    float u_lobe = tc.sampler.get_1d_if(bsdf.reads_lobe_sample());
     Point2f u_bsdf = tc.sampler.get_2d();
 
     // Light sampling.
@@ -76,7 +76,8 @@ Radiance3 DirectIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         // A specular surface: follow the reflection/refraction.
         if (max_depth_ >= 0 && depth >= max_depth_) break;
         ++depth;
-        const float u_lobe = tc.sampler.get_1d(); // before u_dir (a call's arguments have no order)
+        const float u_lobe =
+            tc.sampler.get_1d_if(bsdf.reads_lobe_sample()); // before u_dir (a call's arguments have no order)
         const Point2f u_dir = tc.sampler.get_2d();
         auto bs = bsdf.sample(hit.wo, u_lobe, u_dir);
         if (!bs) break;

@@ -92,7 +92,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
     //   L = L_e(y → lens) |cos θ_y| W_e / (p_light p_A(y) p_ω).
     // (pbrt-v4 divides by the light's Pdf_Li from the lens instead of p_A(y).) Delta-position lights have
     // no area to be seen.
-    Point2f u_cam = sampler.get_2d();
+    Point2f u_cam = sampler.get_2d_if(scene_.camera->uses_lens_sample());
     if (light->type() == LightType::Area) {
         if (auto cs = scene_.camera_sample_wi(les->p_surface, u_cam, time)) {
             SurfaceHit y;
@@ -159,7 +159,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
                         beta *= t_m * mp.sigma_s / pdf;
                         r_u *= t_m * mp.sigma_s / pdf;
                         Vector3f travel = ray.d / length(ray.d);
-                        Point2f u_lens = sampler.get_2d();
+                        Point2f u_lens = sampler.get_2d_if(scene_.camera->uses_lens_sample());
                         if (auto cs = scene_.camera_sample_wi(p, u_lens, time))
                             connect(nullptr, p, medium, *cs, beta * mp.phase.p(dot(travel, cs->wi)));
                         ++depth;
@@ -203,7 +203,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
         Vector3f wo = hit.wo;
 
         // Connect to the camera (t = 1): L = β f*(ωo → ωc) |cos θc| W_e / p_ω (PBR 4th ed. §16.3.2).
-        Point2f u_lens = sampler.get_2d();
+        Point2f u_lens = sampler.get_2d_if(scene_.camera->uses_lens_sample());
         if (bsdf.is_non_specular() && !(caustics_only_ && first_vertex)) {
             if (auto cs = scene_.camera_sample_wi(hit.p, u_lens, time)) {
                 Bsdf3 f = bsdf.f(wo, cs->wi, TransportMode::Importance);
@@ -214,7 +214,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
         }
 
         // Scatter.
-        float u_lobe = sampler.get_1d();
+        float u_lobe = sampler.get_1d_if(bsdf.reads_lobe_sample());
         Point2f u_bsdf = sampler.get_2d();
         auto bs = bsdf.sample(wo, u_lobe, u_bsdf, TransportMode::Importance);
         if (!bs) break;

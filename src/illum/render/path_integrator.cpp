@@ -102,7 +102,7 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         }
 
         // Continue the path by sampling the BSDF.
-        float u_lobe = sampler.get_1d();
+        float u_lobe = sampler.get_1d_if(bsdf.reads_lobe_sample());
         Point2f u_dir = sampler.get_2d();
         auto bs = bsdf.sample(wo, u_lobe, u_dir);
         if (!bs) break;

@@ -370,7 +370,7 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
         v.pdf_fwd = convert_density(prev, pdf_fwd, v);
         ++n;
         if (n >= max_vertices || bsdf.flags() == kNone) break;
-        float u_lobe = sampler.get_1d();
+        float u_lobe = sampler.get_1d_if(bsdf.reads_lobe_sample());
         Point2f u_dir = sampler.get_2d();
         auto bs = bsdf.sample(hit.wo, u_lobe, u_dir, mode);
         if (!bs) break;

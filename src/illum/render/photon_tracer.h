@@ -87,7 +87,8 @@ std::uint64_t PhotonTracer::trace(std::uint64_t global_index, SampledWavelengths
             continue;
         }
         if (bsdf.flags() == kNone) break;
-        const float u_lobe = sampler.get_1d(); // before u_dir (a call's arguments have no order)
+        const float u_lobe =
+            sampler.get_1d_if(bsdf.reads_lobe_sample()); // before u_dir (a call's arguments have no order)
         const Point2f u_dir = sampler.get_2d();
         auto bs = bsdf.sample(-ray.d, u_lobe, u_dir, TransportMode::Importance);
         if (!bs) break;

@@ -157,11 +157,22 @@ public:
     }
 
     // Moves past the next 2D dimension pair without computing it (the sequence afterwards is get_2d()'s).
-    void skip_2d() {
-        if (kind_ == SamplerKind::sobol)
-            ++dimension_;
-        else
-            (void)get_2d();
+    void skip_2d() { (void)get_2d_if(false); }
+
+    // get_1d() / get_2d() for a caller that reads the draw only when `read`: a draw a model ignores (a
+    // one-lobe BSDF's lobe choice, a pinhole camera's lens point) is not computed, its dimensions passed
+    // over so that the sequence afterwards is the same, and 0 returned. The dimension-indexed kinds skip
+    // the work (for Owen-scrambled Sobol' a draw costs several times a PCG32 number); the independent kind
+    // draws as always, keeping its stream in step.
+    float get_1d_if(bool read) {
+        if (read || kind_ == SamplerKind::independent) return get_1d();
+        pass_dimensions(1);
+        return 0;
+    }
+    Point2f get_2d_if(bool read) {
+        if (read || kind_ == SamplerKind::independent) return get_2d();
+        pass_dimensions(2);
+        return {0, 0};
     }
 
     // Where a pixel sample has got to, for resuming it later: the render loop starts the samples of a
@@ -232,6 +243,16 @@ private:
         uint32_t y = reverse_bits(laine_karras_permutation(sobol_dim1_reversed(i_reversed), uint32_t(h2)));
         return {bits_to_unit_float(x), bits_to_unit_float(y)};
     }
+
+    // Moves past the dimensions a 1D (n = 1) or 2D (n = 2) draw would take, as get_1d() / get_2d() advance
+    // them (sobol: one either way; halton: wrapping past its primes).
+    void pass_dimensions(uint32_t n) {
+        if (kind_ == SamplerKind::sobol)
+            ++dimension_;
+        else
+            pass_other(n);
+    }
+    void pass_other(uint32_t n);
 
     // The kinds after sobol (sampler.cpp). Their dimensions: the pixel offset is dimension pair (0, 1)
     // wherever it is asked for; get_1d() then takes dimension 2, 3, ... one each, get_2d() two each.

@@ -228,6 +228,11 @@ float Sampler::other_1d() {
     }
 }
 
+void Sampler::pass_other(uint32_t n) {
+    if (kind_ == SamplerKind::halton && dimension_ + n - 1 >= uint32_t(kPrimeCount)) dimension_ = 2;
+    dimension_ += n;
+}
+
 Point2f Sampler::other_2d() {
     if (kind_ == SamplerKind::halton && dimension_ + 1 >= uint32_t(kPrimeCount)) dimension_ = 2;
     const uint32_t dim = dimension_;

@@ -192,7 +192,7 @@ void SppmRender::trace_camera_path(int x, int y, int iteration, const SampledWav
     // iteration, so its weight is constant and dropped.
     FilterSample fs = scene_.pixel_filter_sample(sampler.get_pixel_2d());
     Point2f p_film{float(x) + 0.5f + fs.offset.x, float(y) + 0.5f + fs.offset.y};
-    Point2f u_lens = sampler.get_2d();
+    Point2f u_lens = sampler.get_2d_if(scene_.camera->uses_lens_sample());
     SampledWavelengths lambda = pass_lambda;
     if (spectral_ && scene_.camera->is_dispersive()) lambda.terminate_secondary();
     std::optional<CameraRay> cr =
@@ -271,7 +271,7 @@ void SppmRender::trace_camera_path(int x, int y, int iteration, const SampledWav
             have_vp = true;
         }
 
-        float u_lobe = sampler.get_1d();
+        float u_lobe = sampler.get_1d_if(bsdf.reads_lobe_sample());
         Point2f u_dir = sampler.get_2d();
         auto bs = bsdf.sample(hit.wo, u_lobe, u_dir);
         if (!bs) break;

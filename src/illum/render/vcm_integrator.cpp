@@ -252,7 +252,7 @@ void VcmRender::trace_light(std::size_t p, int sample_index, ThreadContext& tc, 
     const float splat_scale = float(double(pixels_) / double(n_light_));
     for (int s = 2; lt && s <= n; ++s) {
         const PathVertex& qs = lv[s - 1];
-        Point2f u = sampler.get_2d();
+        Point2f u = sampler.get_2d_if(scene_.camera->uses_lens_sample());
         if (!qs.is_connectible()) continue;
         std::optional<CameraWiSample> cs = scene_.camera_sample_wi(qs.p, u, ctx.time);
         if (!cs) continue;
@@ -481,7 +481,7 @@ void VcmRender::trace_camera(int x, int y, int sample_index, ThreadContext& tc, 
     tc.arena.reset();
     FilterSample fs = scene_.filter->sample(sampler.get_pixel_2d());
     Point2f p_film{float(x) + 0.5f + fs.offset.x, float(y) + 0.5f + fs.offset.y};
-    Point2f u_lens = sampler.get_2d();
+    Point2f u_lens = sampler.get_2d_if(camera.uses_lens_sample());
     tc.lambda = lambda_;
     if (spectral && camera.is_dispersive()) tc.lambda.terminate_secondary();
     std::optional<CameraRay> cr = camera.generate_ray(p_film, u_lens, spectral ? tc.lambda.hero() : kDLineNm);

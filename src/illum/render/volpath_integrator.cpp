@@ -329,7 +329,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
         }
         prev_ctx = LightSampleContext(hit);
 
-        float u_lobe = sampler.get_1d();
+        float u_lobe = sampler.get_1d_if(bsdf.reads_lobe_sample());
         Point2f u_dir = sampler.get_2d();
         auto bs = bsdf.sample(hit.wo, u_lobe, u_dir);
         if (!bs) break;
