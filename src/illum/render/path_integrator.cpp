@@ -78,10 +78,12 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
         Vector3f wo = hit.wo;
         LightSampleContext ctx(hit);
 
-        // Next-event estimation: one light picked by the light sampler for this point.
-        float u_light = sampler.get_1d();
-        Point2f u_li = sampler.get_2d();
-        if (bsdf.is_non_specular()) {
+        // Next-event estimation: one light picked by the light sampler for this point (a specular surface
+        // takes its dimensions without computing them).
+        const bool nee = bsdf.is_non_specular();
+        float u_light = sampler.get_1d_if(nee);
+        Point2f u_li = sampler.get_2d_if(nee);
+        if (nee) {
             float pmf = 0;
             if (const Light* light = scene_.direct_light_sampler.sample(ctx, u_light, &pmf);
                 light && pmf > 0) {
@@ -127,9 +129,10 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
 
         if (!beta.is_finite() || beta.is_black()) break;
         // Russian roulette after the first bounces: continue with probability min(1, max β·η²).
-        float u_rr = sampler.get_1d();
         float rr_beta = beta.max_component() * eta_scale;
-        if (rr_beta < 1 && depth > 1) {
+        const bool roulette = rr_beta < 1 && depth > 1;
+        float u_rr = sampler.get_1d_if(roulette);
+        if (roulette) {
             float q = std::max(0.0f, 1 - rr_beta);
             if (u_rr < q) break;
             beta /= 1 - q;

@@ -347,9 +347,10 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
 
         if (!beta.is_finite() || beta.is_black()) break;
         // Russian roulette on the MIS-weighted throughput, after the first bounces.
-        float u_rr = sampler.get_1d();
         float rr_beta = (beta * eta_scale / r_u.average()).max_component();
-        if (rr_beta < 1 && depth > 1) {
+        const bool roulette = rr_beta < 1 && depth > 1;
+        float u_rr = sampler.get_1d_if(roulette);
+        if (roulette) {
             float q = std::max(0.0f, 1 - rr_beta);
             if (u_rr < q) break;
             beta /= 1 - q;
