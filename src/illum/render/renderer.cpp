@@ -162,11 +162,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
         tc.sampler.start_pixel_sample({x, y}, index);
         s->fs = scene.pixel_filter_sample(tc.sampler.get_pixel_2d());
         Point2f p_film{x + 0.5f + s->fs.offset.x, y + 0.5f + s->fs.offset.y};
-        Point2f u_lens{0.5f, 0.5f};
-        if (uses_lens)
-            u_lens = tc.sampler.get_2d();
-        else
-            tc.sampler.skip_2d();
+        Point2f u_lens = tc.sampler.get_2d_if(uses_lens);
         tc.lambda = spectral ? SampledWavelengths::sample_visible(
                                    scene.wavelength_sample(tc.sampler.get_1d()), scene.color_space)
                              : SampledWavelengths::rgb_mode();

@@ -156,9 +156,6 @@ public:
         return other_2d();
     }
 
-    // Moves past the next 2D dimension pair without computing it (the sequence afterwards is get_2d()'s).
-    void skip_2d() { (void)get_2d_if(false); }
-
     // get_1d() / get_2d() for a caller that reads the draw only when `read`: a draw a model ignores (a
     // one-lobe BSDF's lobe choice, a pinhole camera's lens point) is not computed, its dimensions passed
     // over so that the sequence afterwards is the same, and 0 returned. The dimension-indexed kinds skip
