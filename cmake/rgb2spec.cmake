@@ -3,31 +3,40 @@
 # radiometry, with `sources` its .cpp files: everything but rgb_to_spectrum.cpp (which embeds the tables)
 # and uplift.cpp (which looks them up) becomes the object library illum_radiometry_core, which the
 # generator links; the module's library is those objects plus the two, and `sources` is set to that.
+# Inside illum_add_modules: `suffix`, `below` and the compile options (ARGN) are the function's. The
+# x86-64-v3 copy (suffix _x86_64_v3) has its own object library and embeds the tables the baseline's
+# generator computed, so both builds hold the same tables.
 list(FILTER sources EXCLUDE REGEX "/(rgb_to_spectrum|uplift)\\.cpp$")
-add_library(illum_radiometry_core OBJECT ${sources})
-target_include_directories(illum_radiometry_core PUBLIC src)
-target_link_libraries(illum_radiometry_core PUBLIC ${ILLUM_BELOW})
+add_library(illum_radiometry_core${suffix} OBJECT ${sources})
+target_compile_options(illum_radiometry_core${suffix} PRIVATE ${ARGN})
+target_include_directories(illum_radiometry_core${suffix} PUBLIC src)
+target_link_libraries(illum_radiometry_core${suffix} PUBLIC ${below})
 
-add_executable(illum_rgb2spec_opt tools/rgb2spec_opt.cpp)
-target_link_libraries(illum_rgb2spec_opt PRIVATE illum_radiometry_core TBB::tbb)
+if(NOT suffix)
+    add_executable(illum_rgb2spec_opt tools/rgb2spec_opt.cpp)
+    target_link_libraries(illum_rgb2spec_opt PRIVATE illum_radiometry_core TBB::tbb)
+endif()
 
 set(ILLUM_RGB2SPEC_DIR ${CMAKE_BINARY_DIR}/rgb2spec)
 set(ILLUM_RGB2SPEC_TABLES)
 foreach(space srgb rec2020 aces2065-1 dci-p3)
     list(APPEND ILLUM_RGB2SPEC_TABLES ${ILLUM_RGB2SPEC_DIR}/${space}.bin)
 endforeach()
-add_custom_command(
-    OUTPUT ${ILLUM_RGB2SPEC_TABLES}
-    COMMAND ${CMAKE_COMMAND} -E make_directory ${ILLUM_RGB2SPEC_DIR}
-    COMMAND illum_rgb2spec_opt ${ILLUM_RGB2SPEC_DIR}
-    DEPENDS illum_rgb2spec_opt
-    COMMENT "Computing the RGB-to-spectrum tables (illum_rgb2spec_opt)"
-    VERBATIM)
+if(NOT suffix)
+    add_custom_command(
+        OUTPUT ${ILLUM_RGB2SPEC_TABLES}
+        COMMAND ${CMAKE_COMMAND} -E make_directory ${ILLUM_RGB2SPEC_DIR}
+        COMMAND illum_rgb2spec_opt ${ILLUM_RGB2SPEC_DIR}
+        DEPENDS illum_rgb2spec_opt
+        COMMENT "Computing the RGB-to-spectrum tables (illum_rgb2spec_opt)"
+        VERBATIM)
+endif()
 
 set(embed ${PROJECT_SOURCE_DIR}/src/illum/radiometry/rgb_to_spectrum.cpp)
 set_source_files_properties(${embed} PROPERTIES OBJECT_DEPENDS "${ILLUM_RGB2SPEC_TABLES}"
                             COMPILE_DEFINITIONS "ILLUM_RGB2SPEC_DIR=\"${ILLUM_RGB2SPEC_DIR}\"")
-set(sources ${embed} ${PROJECT_SOURCE_DIR}/src/illum/radiometry/uplift.cpp $<TARGET_OBJECTS:illum_radiometry_core>)
+set(sources ${embed} ${PROJECT_SOURCE_DIR}/src/illum/radiometry/uplift.cpp
+    $<TARGET_OBJECTS:illum_radiometry_core${suffix}>)
 
 # The fit's inner sums: let them vectorise (the `omp simd` reductions) and sqrt be an instruction. The
 # order of the sums then depends on the vector width, which changes the tables only below their tolerance.

@@ -22,3 +22,5 @@ set(ILLUM_BUILD_BENCH OFF CACHE BOOL "")
 set(ILLUM_MPI OFF CACHE BOOL "")
 # An ASan-instrumented Python module cannot be loaded by a plain python3: the sanitizer build has none.
 set(ILLUM_BUILD_PYTHON OFF CACHE BOOL "")
+# One build of the program is enough to check: the x86-64-v3 copy (and its launcher) runs the same code.
+set(ILLUM_X86_64_V3 OFF CACHE BOOL "")

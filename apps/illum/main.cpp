@@ -5,8 +5,8 @@
 #include <fmt/core.h>
 
 #include "commands.h"
-#include "mpi_run.h"
 #include "illum/util/error.h"
+#include "mpi_run.h"
 
 namespace {
 
@@ -28,7 +28,9 @@ int main(int argc, char** argv) {
     illum::cli::MpiRun mpi(&argc, &argv); // under mpirun: this process is one rank of a job
     const bool lead = illum::cli::MpiRun::rank() == 0;
     CLI::App app{"illum: a physically based renderer and reflectance toolkit"};
-    app.set_version_flag("--version", "illum " ILLUM_VERSION);
+    // The instruction-set level this build was compiled for (CMakeLists.txt: the launcher picks between the
+    // x86-64 and x86-64-v3 builds).
+    app.set_version_flag("--version", "illum " ILLUM_VERSION " (" ILLUM_ISA_LEVEL ")");
     app.require_subcommand(0, 1);
     illum::cli::add_render_command(app);
     illum::cli::add_bench_command(app);
