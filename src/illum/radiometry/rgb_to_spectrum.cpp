@@ -67,8 +67,4 @@ const RGBToSpectrumTable& rgb_to_spectrum_table(int space_index) {
     return tables[space_index];
 }
 
-RGBSigmoidPolynomial RGBColorSpace::to_polynomial(Color3 rgb) const {
-    return rgb_to_spectrum_table(index_).lookup(rgb);
-}
-
 } // namespace illum

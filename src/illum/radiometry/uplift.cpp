@@ -4,8 +4,15 @@
 #include <array>
 
 #include "illum/radiometry/densely_sampled_spectrum.h"
+#include "illum/radiometry/rgb_to_spectrum.h"
 
 namespace illum {
+
+// Here rather than beside the tables (rgb_to_spectrum.cpp), so that each build compiles the lookup with its
+// own instruction set: the tables' object is built once for both (cmake/rgb2spec.cmake).
+RGBSigmoidPolynomial RGBColorSpace::to_polynomial(Color3 rgb) const {
+    return rgb_to_spectrum_table(index_).lookup(rgb);
+}
 
 UpliftedRgb uplift_albedo_poly(Color3 rgb, const RGBColorSpace& cs) {
     return {cs.to_polynomial(clamp(rgb, 0.0f, 1.0f)), 1.0f};
