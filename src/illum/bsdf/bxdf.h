@@ -130,11 +130,13 @@ public:
     }
     std::optional<BSDFSample> sample(Vector3f wo_world, float uc, Point2f u,
                                      TransportMode mode = TransportMode::Radiance) const {
+        // One named result, returned on every path (so the caller's storage is the model's return slot),
+        // and built there: a copy of it right after the call would stall (util/in_place.h).
         Vector3f wo = to_local(wo_world);
-        if (wo.z == 0) return std::nullopt;
-        auto s = bxdf_->sample(wo, uc, u, mode);
-        if (!s || s->f.is_black() || !(s->pdf.value > 0) || s->wi.z == 0) return std::nullopt;
-        s->wi = to_world(s->wi);
+        std::optional<BSDFSample> s =
+            wo.z == 0 ? std::optional<BSDFSample>() : bxdf_->sample(wo, uc, u, mode);
+        if (s && (s->f.is_black() || !(s->pdf.value > 0) || s->wi.z == 0)) s.reset();
+        if (s) s->wi = to_world(s->wi);
         return s;
     }
 

@@ -1,6 +1,7 @@
 #include "illum/geometry/accelerator.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -244,19 +245,27 @@ bool traceable(const RTCRay& r) {
     return !std::isnan(r.tfar);
 }
 
+// Each field is read on its own (a relaxed atomic load, which the compiler does not merge with its
+// neighbours; on x86 a plain move): the ray has usually just been stored by its maker, field by field, and
+// one wide load spanning several of those stores waits for them to reach the cache (a store-forwarding
+// stall, util/in_place.h), as the vectoriser's merged load of o.y..d.y did in every shadow ray.
+float field(const float& f) {
+    return std::atomic_ref<float>(const_cast<float&>(f)).load(std::memory_order_relaxed);
+}
+
 RTCRay to_embree(const Ray& ray, float time) {
     RTCRay r;
-    r.org_x = ray.o.x;
-    r.org_y = ray.o.y;
-    r.org_z = ray.o.z;
+    r.org_x = field(ray.o.x);
+    r.org_y = field(ray.o.y);
+    r.org_z = field(ray.o.z);
     // Not 0: Embree flushes denormals, so an origin stepped one ulp off an exact coordinate (z = 0) can
     // read as lying on the surface and report t = 0. No true hit lies closer than the smallest normal float.
     r.tnear = std::numeric_limits<float>::min();
-    r.dir_x = ray.d.x;
-    r.dir_y = ray.d.y;
-    r.dir_z = ray.d.z;
+    r.dir_x = field(ray.d.x);
+    r.dir_y = field(ray.d.y);
+    r.dir_z = field(ray.d.z);
     r.time = time;
-    r.tfar = ray.tmax;
+    r.tfar = field(ray.tmax);
     r.mask = 0xffffffffu;
     r.id = 0;
     r.flags = 0;

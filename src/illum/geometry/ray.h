@@ -70,19 +70,23 @@ inline Point3f offset_ray_origin(Point3f p, Vector3f p_error, Normal3f n, Vector
     return po;
 }
 
+// The rays spawned at surfaces are always inlined: a ray returned from a call through memory and then
+// copied or read as wider pieces than its fields were stored stalls on store forwarding (util/in_place.h).
+
 // A ray leaving a surface point in direction d.
-inline Ray spawn_ray(Point3f p, Vector3f p_error, Normal3f n, Vector3f d) {
+[[gnu::always_inline]] inline Ray spawn_ray(Point3f p, Vector3f p_error, Normal3f n, Vector3f d) {
     return {offset_ray_origin(p, p_error, n, d), d, kInfinity};
 }
 
 // A shadow ray from a surface point to a target point (its own offset already applied); tmax stops
 // just short of the target (d is unnormalised: t = 1 at the target).
-inline Ray spawn_ray_to(Point3f p, Vector3f p_error, Normal3f n, Point3f target) {
+[[gnu::always_inline]] inline Ray spawn_ray_to(Point3f p, Vector3f p_error, Normal3f n, Point3f target) {
     Point3f o = offset_ray_origin(p, p_error, n, target - p);
     return {o, target - o, 1 - 1e-4f};
 }
 
-inline Ray spawn_ray_to(Point3f p, Vector3f p_error, Normal3f n, Point3f q, Vector3f q_error, Normal3f nq) {
+[[gnu::always_inline]] inline Ray spawn_ray_to(Point3f p, Vector3f p_error, Normal3f n, Point3f q,
+                                               Vector3f q_error, Normal3f nq) {
     Point3f pf = offset_ray_origin(p, p_error, n, q - p);
     Point3f pt = offset_ray_origin(q, q_error, nq, pf - q);
     return {pf, pt - pf, 1 - 1e-4f};

@@ -64,7 +64,8 @@ struct SurfaceHit : TextureEvalContext {
     }
 
     // The shading frame: +z is the shading normal, x follows dpdu.
-    Frame shading_frame() const { return Frame::from_xz(dpdu, Vector3f(ns)); }
+    // (Always inlined, as Frame::from_xz: the frame goes from registers into the BSDF, not through memory.)
+    [[gnu::always_inline]] Frame shading_frame() const { return Frame::from_xz(dpdu, Vector3f(ns)); }
 
     // The medium a ray leaving the surface along w travels in.
     const Medium* medium_for(Vector3f w) const {
@@ -72,13 +73,14 @@ struct SurfaceHit : TextureEvalContext {
         return dot(w, n) > 0 ? medium_interface->outside : medium_interface->inside;
     }
 
-    Ray spawn_ray(Vector3f d) const {
+    // Always inlined, as the functions they call (geometry/ray.h).
+    [[gnu::always_inline]] Ray spawn_ray(Vector3f d) const {
         Ray r = illum::spawn_ray(p, p_error, n, d);
         r.medium = medium_for(d);
         r.time = time;
         return r;
     }
-    Ray spawn_ray_to(Point3f target) const {
+    [[gnu::always_inline]] Ray spawn_ray_to(Point3f target) const {
         Ray r = illum::spawn_ray_to(p, p_error, n, target);
         r.medium = medium_for(target - p);
         r.time = time;

@@ -28,7 +28,9 @@ struct Frame {
     }
     static Frame from_z(Normal3f z) { return from_z(Vector3f(z)); }
     // A frame with normal z whose s axis follows the tangent x as closely as orthogonality allows.
-    static Frame from_xz(Vector3f x, Vector3f z) {
+    // Always inlined: a frame returned from a call is copied out of its return slot right after the call's
+    // stores, a store-forwarding stall (util/in_place.h) that cost more than the frame's arithmetic.
+    [[gnu::always_inline]] static Frame from_xz(Vector3f x, Vector3f z) {
         Vector3f s = x - z * dot(x, z);
         float len2 = length_squared(s);
         if (!(len2 > 1e-12f)) return from_z(z);

@@ -17,6 +17,7 @@
 #include "illum/render/path_vertex.h"
 #include "illum/render/render_arena.h"
 #include "illum/util/error.h"
+#include "illum/util/in_place.h"
 #include "illum/util/progress.h"
 
 namespace illum {
@@ -165,7 +166,7 @@ SampledSpectrum connect(const PathContext& ctx, const Subpaths& sp, int s, int t
         have_sampled = true;
         const Segment to_camera = segment(qs, *sampled);
         if (!(to_camera.inv_d2 > 0)) return SampledSpectrum(0.0f);
-        at_qs = end_scattering(qs, to_camera.w, TransportMode::Importance);
+        assign_in_place(at_qs, [&] { return end_scattering(qs, to_camera.w, TransportMode::Importance); });
         l = qs.beta * at_qs.f * sampled->beta;
         if (qs.on_surface()) l *= std::abs(dot(cs->wi, Vector3f(qs.ns)));
         if (!l.is_black()) l *= connection_transmittance(ctx, qs, *sampled, ch);
@@ -183,8 +184,8 @@ SampledSpectrum connect(const PathContext& ctx, const Subpaths& sp, int s, int t
         if (!qs.is_connectible() || !pt.is_connectible()) return SampledSpectrum(0.0f);
         const Segment joint = segment(qs, pt);
         if (!(joint.inv_d2 > 0)) return SampledSpectrum(0.0f);
-        at_qs = end_scattering(qs, joint.w, TransportMode::Importance);
-        at_pt = end_scattering(pt, -joint.w, TransportMode::Radiance);
+        assign_in_place(at_qs, [&] { return end_scattering(qs, joint.w, TransportMode::Importance); });
+        assign_in_place(at_pt, [&] { return end_scattering(pt, -joint.w, TransportMode::Radiance); });
         l = qs.beta * at_qs.f * at_pt.f * pt.beta;
         if (!l.is_black()) l *= connect_g(ctx, qs, pt, joint, ch);
     }
@@ -269,9 +270,11 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         FilterSample fs = scene_.pixel_filter_sample(sampler.get_pixel_2d());
         Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
         Point2f u_lens = sampler.get_2d_if(camera.uses_lens_sample());
-        tc.lambda = spectral ? SampledWavelengths::sample_visible(scene_.wavelength_sample(sampler.get_1d()),
-                                                                  scene_.color_space)
-                             : SampledWavelengths::rgb_mode();
+        assign_in_place(tc.lambda, [&] { // (util/in_place.h)
+            return spectral ? SampledWavelengths::sample_visible(scene_.wavelength_sample(sampler.get_1d()),
+                                                                 scene_.color_space)
+                            : SampledWavelengths::rgb_mode();
+        });
         if (dispersive_camera) tc.lambda.terminate_secondary();
         const std::uint32_t pixel = std::uint32_t(y) * std::uint32_t(w) + std::uint32_t(x);
         std::optional<CameraRay> cr =
@@ -295,7 +298,7 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         PathVertex* lv = sp.light.data();
 
         // The camera subpath.
-        cv[0] = PathVertex{};
+        assign_in_place(cv[0], [] { return PathVertex{}; });
         cv[0].type = VertexType::Camera;
         cv[0].p = cr->ray.o;
         cv[0].medium = scene_.camera_medium;

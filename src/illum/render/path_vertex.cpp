@@ -9,6 +9,7 @@
 #include "illum/medium/sample_majorant.h"
 #include "illum/render/shadow_transmittance.h"
 #include "illum/render/texture_footprint.h"
+#include "illum/util/in_place.h"
 
 namespace illum {
 
@@ -347,10 +348,12 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
             break;
         }
         footprint_from_camera(hit, ctx.scene, tc.sampler.samples_per_pixel());
-        BSDF bsdf = surface_bsdf(hit, tc.lambda, tc.arena);
+        // Built in the vertex (assign_in_place): a BSDF copied out of the call's result would stall.
+        assign_in_place(v.bsdf, [&] { return surface_bsdf(hit, tc.lambda, tc.arena); });
+        const BSDF& bsdf = v.bsdf;
         if (!bsdf) {
             // An interface between media: crossed, not a vertex.
-            ray = hit.spawn_ray(ray.d);
+            assign_in_place(ray, [&] { return hit.spawn_ray(ray.d); });
             ++crossings;
             continue;
         }
@@ -360,7 +363,6 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
         v.pdf_rev = 0;
         v.medium = nullptr;
         v.light = nullptr;
-        v.bsdf = bsdf;
         v.p = hit.p;
         v.p_error = hit.p_error;
         v.ng = hit.n;
@@ -384,7 +386,7 @@ int walk(const PathContext& ctx, Ray ray, SampledSpectrum beta, float pdf_dir, i
             pdf_rev = pdf_fwd = 0;
         }
         prev.pdf_rev = convert_density(v, pdf_rev, prev);
-        ray = hit.spawn_ray(bs->wi);
+        assign_in_place(ray, [&] { return hit.spawn_ray(bs->wi); });
         ray.medium = walk_into(ctx, ray.medium, hit);
     }
     return n;
@@ -475,7 +477,7 @@ bool connect_sampled_light(const PathContext& ctx, const PathVertex& pt, float u
     sampled->pdf_fwd = pdf_light_origin(ctx, *sampled, pt);
     const Segment to_light = segment(pt, *sampled);
     if (!(to_light.inv_d2 > 0)) return false;
-    *at_pt = end_scattering(pt, to_light.w, TransportMode::Radiance);
+    assign_in_place(*at_pt, [&] { return end_scattering(pt, to_light.w, TransportMode::Radiance); });
     *l = pt.beta * at_pt->f * sampled->beta;
     if (pt.on_surface()) *l *= std::abs(dot(ls->wi, Vector3f(pt.ns)));
     if (!l->is_black()) *l *= connection_transmittance(ctx, pt, *sampled, channel);
@@ -486,11 +488,12 @@ int trace_light_subpath(const PathContext& ctx, float u_light, Point2f u_pos, Po
                         int channel, PathVertex* path) {
     float pmf = 0;
     const Light* light = ctx.scene.light_sampler.sample(u_light, &pmf);
-    std::optional<LightLeSample> les;
-    if (light && pmf > 0) les = light->sample_le_at(ctx.time, u_pos, u_dir, ctx.tc.lambda);
+    // Results built where they are kept, not copied (util/in_place.h).
+    const std::optional<LightLeSample> les =
+        light && pmf > 0 ? light->sample_le_at(ctx.time, u_pos, u_dir, ctx.tc.lambda) : std::nullopt;
     if (!les || !(les->pdf_pos.value > 0) || !(les->pdf_dir.value > 0) || les->flux.is_black()) return 0;
     PathVertex& l0 = path[0];
-    l0 = PathVertex{};
+    assign_in_place(l0, [] { return PathVertex{}; });
     l0.type = VertexType::Light;
     l0.light = light;
     l0.p = les->ray.o;
@@ -498,17 +501,16 @@ int trace_light_subpath(const PathContext& ctx, float u_light, Point2f u_pos, Po
     l0.medium = light->medium;
     l0.beta = les->radiance.s;
     l0.pdf_fwd = pmf * les->pdf_pos.value;
-    Ray lr = les->ray;
-    lr.medium = light->medium_towards(lr.d, les->n);
-    lr.time = ctx.time;
-    int n = 1 + walk(ctx, lr, (les->flux / pmf).s, les->pdf_dir.value, max_depth, TransportMode::Importance,
-                     channel, path + 1);
+    const Vector3f d = les->ray.d;
+    int n = 1 + walk(ctx, Ray{les->ray.o, d, les->ray.tmax, ctx.time, light->medium_towards(d, les->n)},
+                     (les->flux / pmf).s, les->pdf_dir.value, max_depth, TransportMode::Importance, channel,
+                     path + 1);
     if (l0.is_infinite_light()) {
         if (n > 1) {
             path[1].pdf_fwd = les->pdf_pos.value;
-            if (path[1].on_surface()) path[1].pdf_fwd *= std::abs(dot(lr.d, Vector3f(path[1].ng)));
+            if (path[1].on_surface()) path[1].pdf_fwd *= std::abs(dot(d, Vector3f(path[1].ng)));
         }
-        l0.pdf_fwd = infinite_light_density(ctx, lr.d);
+        l0.pdf_fwd = infinite_light_density(ctx, d);
     }
     return n;
 }

@@ -11,6 +11,7 @@
 #include "illum/camera/film.h"
 #include "illum/render/render_arena.h"
 #include "illum/util/error.h"
+#include "illum/util/in_place.h"
 #include "illum/util/progress.h"
 
 namespace illum {
@@ -163,9 +164,11 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
         s->fs = scene.pixel_filter_sample(tc.sampler.get_pixel_2d());
         Point2f p_film{x + 0.5f + s->fs.offset.x, y + 0.5f + s->fs.offset.y};
         Point2f u_lens = tc.sampler.get_2d_if(uses_lens);
-        tc.lambda = spectral ? SampledWavelengths::sample_visible(
-                                   scene.wavelength_sample(tc.sampler.get_1d()), scene.color_space)
-                             : SampledWavelengths::rgb_mode();
+        assign_in_place(tc.lambda, [&] { // (util/in_place.h)
+            return spectral ? SampledWavelengths::sample_visible(scene.wavelength_sample(tc.sampler.get_1d()),
+                                                                 scene.color_space)
+                            : SampledWavelengths::rgb_mode();
+        });
         // RGB mode: the camera sees the d line. A dispersive lens sends each wavelength its own way: the
         // path keeps the hero only. A vignetted sample adds zero radiance but still counts (its filter
         // weight goes to the pixel).
@@ -175,7 +178,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
             s->cr = camera_ray_differential(scene, p_film, u_lens, lambda_cam, diff_scale,
                                             &tc.camera_differentials);
         else
-            s->cr = scene.camera->generate_ray(p_film, u_lens, lambda_cam);
+            assign_in_place(s->cr, [&] { return scene.camera->generate_ray(p_film, u_lens, lambda_cam); });
         // Motion blur: the sample's time, shared by every ray of its path.
         if (s->cr && scene.has_motion) {
             float time = scene.sample_time(tc.sampler.get_1d());
