@@ -270,11 +270,7 @@ RenderResult BDPTIntegrator::render_image(const RenderOptions& options) const {
         FilterSample fs = scene_.pixel_filter_sample(sampler.get_pixel_2d());
         Point2f p_film{x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y};
         Point2f u_lens = sampler.get_2d_if(camera.uses_lens_sample());
-        assign_in_place(tc.lambda, [&] { // (util/in_place.h)
-            return spectral ? SampledWavelengths::sample_visible(scene_.wavelength_sample(sampler.get_1d()),
-                                                                 scene_.color_space)
-                            : SampledWavelengths::rgb_mode();
-        });
+        assign_in_place(tc.lambda, [&] { return scene_.sample_wavelengths(spectral, sampler); });
         if (dispersive_camera) tc.lambda.terminate_secondary();
         const std::uint32_t pixel = std::uint32_t(y) * std::uint32_t(w) + std::uint32_t(x);
         std::optional<CameraRay> cr =

@@ -48,11 +48,7 @@ int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::v
         out.push_back({p_raster, scene_.sensor.to_film(l, tc.lambda)});
     };
 
-    assign_in_place(tc.lambda, [&] { // (util/in_place.h)
-        return spectral ? SampledWavelengths::sample_visible(scene_.wavelength_sample(sampler.get_1d()),
-                                                             scene_.color_space)
-                        : SampledWavelengths::rgb_mode();
-    });
+    assign_in_place(tc.lambda, [&] { return scene_.sample_wavelengths(spectral, sampler); });
     float pmf = 0;
     const Light* light = scene_.light_sampler.sample(sampler.get_1d(), &pmf);
     if (!light || !(pmf > 0)) return dropped;

@@ -164,11 +164,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
         s->fs = scene.pixel_filter_sample(tc.sampler.get_pixel_2d());
         Point2f p_film{x + 0.5f + s->fs.offset.x, y + 0.5f + s->fs.offset.y};
         Point2f u_lens = tc.sampler.get_2d_if(uses_lens);
-        assign_in_place(tc.lambda, [&] { // (util/in_place.h)
-            return spectral ? SampledWavelengths::sample_visible(scene.wavelength_sample(tc.sampler.get_1d()),
-                                                                 scene.color_space)
-                            : SampledWavelengths::rgb_mode();
-        });
+        assign_in_place(tc.lambda, [&] { return scene.sample_wavelengths(spectral, tc.sampler); });
         // RGB mode: the camera sees the d line. A dispersive lens sends each wavelength its own way: the
         // path keeps the hero only. A vignetted sample adds zero radiance but still counts (its filter
         // weight goes to the pixel).

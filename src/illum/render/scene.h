@@ -150,6 +150,12 @@ public:
     }
     // The sample of a path's wavelengths, or 1/2 (Option "disablewavelengthjitter").
     float wavelength_sample(float u) const { return request.disable_wavelength_jitter ? 0.5f : u; }
+    // A camera or light path's wavelengths: in spectral mode sampled over the visible range from the
+    // sampler's next dimension, in RGB mode the fixed set (drawing nothing).
+    SampledWavelengths sample_wavelengths(bool spectral, Sampler& sampler) const {
+        return spectral ? SampledWavelengths::sample_visible(wavelength_sample(sampler.get_1d()), color_space)
+                        : SampledWavelengths::rgb_mode();
+    }
 
     // pixel_bounds, or every pixel when none were set (a scene made by hand).
     PixelBounds output_bounds() const {
