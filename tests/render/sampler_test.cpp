@@ -357,5 +357,83 @@ TEST(Sampler, DrawsNotReadLeaveTheRestOfTheSequence) {
     }
 }
 
+// Dimension 1 in reversed bits from the index by the superset transform (sobol_block.h) equals the
+// tabulated map, over every single bit and many random indices.
+TEST(SobolBlock, SupersetTransformIsDimensionOne) {
+    using namespace sampling_detail;
+    for (int b = 0; b < 32; ++b)
+        EXPECT_EQ(sobol_dim1_reversed_from_index(1u << b), sobol_dim1_reversed(reverse_bits(1u << b))) << b;
+    PCG32 rng(11);
+    for (int k = 0; k < 100000; ++k) {
+        uint32_t i = rng.uniform_uint32();
+        ASSERT_EQ(sobol_dim1_reversed_from_index(i), sobol_dim1_reversed(reverse_bits(i))) << i;
+        ASSERT_EQ(reverse_bits(sobol_dim1_reversed_from_index(i)), sobol_dim1(i)) << i;
+    }
+}
+
+// The vector lanes compute the scalar seeds and draws bit for bit, for random pixels, indices and blocks.
+TEST(SobolBlock, VectorLanesAreTheScalarDraws) {
+    using namespace sampling_detail;
+    if (!sobol_blocks_vectorised()) GTEST_SKIP() << "this processor has no AVX2: blocks are drawn one by one";
+    PCG32 rng(5);
+    for (int k = 0; k < 20000; ++k) {
+        const uint64_t pixel_hash = (uint64_t(rng.uniform_uint32()) << 32) | rng.uniform_uint32();
+        const uint32_t reversed_index = k < 64 ? reverse_bits(uint32_t(k)) : rng.uniform_uint32();
+        const uint32_t first = 1 + kSobolBlock * (rng.uniform_uint32() % 64);
+        SobolBlockSeeds sv, ss;
+        sobol_block_seeds_avx2(pixel_hash, first, &sv);
+        sobol_block_seeds_scalar(pixel_hash, first, &ss);
+        float xv[kSobolBlock], yv[kSobolBlock], xs[kSobolBlock], ys[kSobolBlock];
+        sobol_block_avx2(sv, reversed_index, xv, yv);
+        sobol_block_scalar(ss, reversed_index, xs, ys);
+        for (uint32_t j = 0; j < kSobolBlock; ++j) {
+            ASSERT_EQ(sv.index[j], ss.index[j]) << k << " " << j;
+            ASSERT_EQ(sv.x[j], ss.x[j]) << k << " " << j;
+            ASSERT_EQ(sv.y[j], ss.y[j]) << k << " " << j;
+            ASSERT_EQ(xv[j], xs[j]) << k << " " << j;
+            ASSERT_EQ(yv[j], ys[j]) << k << " " << j;
+            const Point2f p = sobol_owen_2d(pixel_hash, reversed_index, first + j);
+            ASSERT_EQ(xs[j], p.x) << k << " " << j;
+            ASSERT_EQ(ys[j], p.y) << k << " " << j;
+            ASSERT_EQ(xs[j], sobol_owen_1d(pixel_hash, reversed_index, first + j)) << k << " " << j;
+        }
+    }
+}
+
+// The sampler's draws are the per-dimension formulas whichever way it computes them, also when a sample is
+// resumed after others have been started (the path tracer's camera packets).
+TEST(SobolBlock, SamplerDrawsAreThePerDimensionDraws) {
+    using namespace sampling_detail;
+    Sampler a(SamplerKind::sobol, 64, 3), other(SamplerKind::sobol, 64, 3);
+    for (int index : {0, 1, 37, 63, 200}) {
+        const Point2i pixel{5, 9};
+        const uint64_t pixel_hash = hash(uint64_t(3), pixel.x, pixel.y);
+        const uint32_t rev = reverse_bits(uint32_t(index));
+        a.start_pixel_sample(pixel, index);
+        uint32_t dim = 1;
+        for (int k = 0; k < 40; ++k) {
+            if (k == 7) { // suspend, draw another sample on the same sampler, resume
+                Sampler::Position p = a.position();
+                a.start_pixel_sample({6, 9}, index + 1);
+                (void)a.get_2d();
+                (void)a.get_1d();
+                a.resume(p);
+            }
+            if (k % 3 == 0) {
+                ASSERT_EQ(a.get_1d(), sobol_owen_1d(pixel_hash, rev, dim)) << index << " " << dim;
+            } else {
+                const Point2f p = a.get_2d(), q = sobol_owen_2d(pixel_hash, rev, dim);
+                ASSERT_EQ(p.x, q.x) << index << " " << dim;
+                ASSERT_EQ(p.y, q.y) << index << " " << dim;
+            }
+            ++dim;
+        }
+        other.start_pixel_sample(pixel, index);
+        const Point2f p0 = other.get_pixel_2d(), q0 = sobol_owen_2d(pixel_hash, rev, 0);
+        EXPECT_EQ(p0.x, q0.x);
+        EXPECT_EQ(p0.y, q0.y);
+    }
+}
+
 } // namespace
 } // namespace illum

@@ -107,4 +107,40 @@ uint32_t sobol_dim1_reversed(uint32_t r) {
 
 } // namespace sampling_detail
 
+void Sampler::compute_block(uint32_t b, uint32_t slot) {
+    using namespace sampling_detail;
+    if (seeds_pixel_hash_ != pixel_hash_) {
+        seeds_pixel_hash_ = pixel_hash_;
+        seeds_valid_ = 0;
+    }
+    SobolBlockSeeds scratch;
+    const SobolBlockSeeds* seeds = &scratch;
+    if (b < kSeedBlocks) {
+        seeds = &seeds_[b];
+        if (!(seeds_valid_ & (1u << b))) {
+            sobol_block_seeds(pixel_hash_, 1 + b * kSobolBlock, &seeds_[b]);
+            seeds_valid_ |= 1u << b;
+        }
+    } else {
+        sobol_block_seeds(pixel_hash_, 1 + b * kSobolBlock, &scratch);
+    }
+    sobol_block(*seeds, reversed_index_, draws_.x[slot], draws_.y[slot]);
+    draws_.id[slot] = b;
+}
+
+void Sampler::start_blocks() {
+    draws_.current = 0;
+    draws_.id[0] = DrawBlocks::kNone;
+    compute_block(0, 1);
+}
+
+void Sampler::enter_block(uint32_t b) {
+    uint32_t& c = draws_.current;
+    if (draws_.id[c ^ 1] == b)
+        c ^= 1;
+    else // not computed ahead: a draw past the next block (pass_dimensions) or a resumed old position
+        compute_block(b, c);
+    compute_block(b + 1, c ^ 1);
+}
+
 } // namespace illum

@@ -43,6 +43,7 @@
 
 #include "illum/math/rng.h"
 #include "illum/math/vector.h"
+#include "illum/render/sobol_block.h"
 
 namespace illum {
 
@@ -74,50 +75,16 @@ struct SamplerSettings {
 // The tables a sampler shares between its copies (halton's digit permutations, pmj02bn's pixel samples).
 struct SamplerTables;
 
-namespace sampling_detail {
-
-inline uint32_t reverse_bits(uint32_t v) {
-    // Bits within each byte, then the bytes by one byte swap.
-    v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
-    v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
-    v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
-    return __builtin_bswap32(v);
-}
-
-// Sobol dimension 0: the van der Corput radical inverse in base 2, as a 32-bit fraction.
-inline uint32_t sobol_dim0(uint32_t index) { return reverse_bits(index); }
-// Sobol dimension 1: XOR of the direction numbers v_i for the set bits i of index, with v_0 = 2^31 and
-// v_i = v_{i-1} ^ (v_{i-1} >> 1). Defined out of line with byte-wise tables.
-uint32_t sobol_dim1(uint32_t index);
-// The same, bit-reversed, of the bit-reversed index: reverse_bits(sobol_dim1(i)) from reverse_bits(i). The
-// map is linear over GF(2) either way, so it is tabulated alike; the Owen-scrambled sampler works on
-// reversed indices and values and saves two reversals.
-uint32_t sobol_dim1_reversed(uint32_t reversed_index);
-
-// The Laine-Karras hash (S. Laine, T. Karras, "Stratified Sampling for Stochastic Transparency", EGSR 2011)
-// with the constants Burley 2020 found to give better-mixed permutations. Each output bit depends only on
-// the same and lower input bits, so applied to a bit-reversed fraction it is a nested uniform scramble.
-inline uint32_t laine_karras_permutation(uint32_t x, uint32_t seed) {
-    x += seed;
-    x ^= x * 0x6c50b47cu;
-    x ^= x * 0xb82f1e52u;
-    x ^= x * 0xc7afe638u;
-    x ^= x * 0x8d22f6e6u;
-    return x;
-}
-
-// Owen scramble of a 32-bit fraction (or, for index shuffling, of a 32-bit index seen as a fraction).
-inline uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
-    return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
-}
-
-// A 32-bit fraction to float in [0, 1): the top 24 bits times 2^-24 (rounding could otherwise give 1).
-inline float bits_to_unit_float(uint32_t x) { return float(x >> 8) * 0x1p-24f; }
-
-} // namespace sampling_detail
-
 class Sampler {
 public:
+    // Two blocks of sobol draws (block_draw): id[current] is at hand, the other computed ahead.
+    struct DrawBlocks {
+        static constexpr uint32_t kNone = ~0u;
+        uint32_t id[2] = {kNone, kNone};
+        uint32_t current = 0;
+        float x[2][sampling_detail::kSobolBlock] = {}, y[2][sampling_detail::kSobolBlock] = {};
+    };
+
     // Throws illum::Error for settings the kind cannot take (pmj02bn beyond 65536 spp).
     Sampler(SamplerKind kind, int samples_per_pixel, uint64_t seed = 0, const SamplerSettings& settings = {});
 
@@ -136,6 +103,7 @@ public:
         } else if (kind_ == SamplerKind::sobol) {
             pixel_hash_ = hash(seed_, pixel.x, pixel.y);
             reversed_index_ = sampling_detail::reverse_bits(index_);
+            if (blocks_) start_blocks();
         } else {
             start_other(pixel);
         }
@@ -143,7 +111,7 @@ public:
 
     float get_1d() {
         if (kind_ == SamplerKind::independent) return rng_.uniform_float();
-        if (kind_ == SamplerKind::sobol) return sobol_1d(dimension_++);
+        if (kind_ == SamplerKind::sobol) return blocks_ ? block_draw(dimension_++).x : sobol_1d(dimension_++);
         return other_1d();
     }
 
@@ -152,7 +120,7 @@ public:
             float x = rng_.uniform_float();
             return {x, rng_.uniform_float()};
         }
-        if (kind_ == SamplerKind::sobol) return sobol_2d(dimension_++);
+        if (kind_ == SamplerKind::sobol) return blocks_ ? block_draw(dimension_++) : sobol_2d(dimension_++);
         return other_2d();
     }
 
@@ -175,7 +143,7 @@ public:
     // Where a pixel sample has got to, for resuming it later: the render loop starts the samples of a
     // camera-ray packet one after another and continues each once the packet is traced. zsobol's cache of
     // a pixel's digits is not part of it: resume() keeps the cache where it belongs to the resumed sample's
-    // pixel and round, and empties it otherwise.
+    // pixel and round, and empties it otherwise. sobol's blocks of draws are.
     struct Position {
         uint32_t index, dimension, reversed_index;
         uint64_t pixel_hash;
@@ -183,10 +151,12 @@ public:
         Point2i pixel;
         uint32_t round, round_index;
         uint64_t morton_index, halton_index;
+        DrawBlocks blocks;
     };
     Position position() const {
-        return {index_, dimension_, reversed_index_, pixel_hash_,   rng_,         pixel_rng_,
-                pixel_, round_,     round_index_,    morton_index_, halton_index_};
+        return {index_,       dimension_,    reversed_index_, pixel_hash_,
+                rng_,         pixel_rng_,    pixel_,          round_,
+                round_index_, morton_index_, halton_index_,   blocks_ ? draws_ : DrawBlocks{}};
     }
     void resume(const Position& p) {
         index_ = p.index;
@@ -200,6 +170,7 @@ public:
         round_index_ = p.round_index;
         morton_index_ = p.morton_index;
         halton_index_ = p.halton_index;
+        if (blocks_) draws_ = p.blocks;
         if (kind_ == SamplerKind::zsobol) key_zsobol_cache();
     }
 
@@ -214,32 +185,31 @@ public:
     }
 
 private:
-    // One finaliser round per dimension (a Weyl step keeps dimensions apart); pixel_hash_ already mixes
-    // (seed, pixel).
-    uint64_t dimension_hash(uint32_t dim) const {
-        return mix_bits(pixel_hash_ + (uint64_t(dim) + 1) * 0x9e3779b97f4a7c15ULL);
-    }
-
-    // Sample index_ of Owen-scrambled Sobol' dimensions (0, 1) with per-dimension seeds: the index is itself
-    // Owen-scrambled (shuffled), i = nested_uniform_scramble(index_), then each coordinate
-    // nested_uniform_scramble(sobol_dimk(i)). Kept in reversed bits where the Laine-Karras permutation wants
-    // them: LK(reverse(index_)) is reverse(i); sobol_dim0(i) = reverse(i), so x = reverse(LK(i)); y comes
-    // from sobol_dim1_reversed(reverse(i)). Three reversals for a 2D sample, two for 1D.
+    // Dimension dim of sample index_ (sobol_block.h): two chains of hashing, three bit reversals for 2D and
+    // two for 1D.
     float sobol_1d(uint32_t dim) const {
-        using namespace sampling_detail;
-        uint64_t h = dimension_hash(dim);
-        uint32_t i = reverse_bits(laine_karras_permutation(reversed_index_, uint32_t(h)));
-        return bits_to_unit_float(reverse_bits(laine_karras_permutation(i, uint32_t(h >> 32))));
+        return sampling_detail::sobol_owen_1d(pixel_hash_, reversed_index_, dim);
     }
-
     Point2f sobol_2d(uint32_t dim) const {
-        using namespace sampling_detail;
-        uint64_t h = dimension_hash(dim), h2 = mix_bits(h);
-        uint32_t i_reversed = laine_karras_permutation(reversed_index_, uint32_t(h));
-        uint32_t x = reverse_bits(laine_karras_permutation(reverse_bits(i_reversed), uint32_t(h >> 32)));
-        uint32_t y = reverse_bits(laine_karras_permutation(sobol_dim1_reversed(i_reversed), uint32_t(h2)));
-        return {bits_to_unit_float(x), bits_to_unit_float(y)};
+        return sampling_detail::sobol_owen_2d(pixel_hash_, reversed_index_, dim);
     }
+    // The same from the block of eight dimensions that holds dim (>= 1: dimension 0, the pixel's, is drawn
+    // by itself), computed in vector lanes (sobol_block.h); the value does not depend on the way, as the
+    // block's lanes are the scalar draws. A block takes about 150 cycles from its seeds to its values, and a
+    // path that waited for it at its first draw would gain little, so each block is computed one ahead: block
+    // 0 when the sample starts, block b + 1 when the path first draws from block b. The path then finds its
+    // draws computed while it did other work.
+    Point2f block_draw(uint32_t dim) {
+        const uint32_t b = (dim - 1) / sampling_detail::kSobolBlock,
+                       k = (dim - 1) % sampling_detail::kSobolBlock;
+        if (b != draws_.id[draws_.current]) enter_block(b);
+        return {draws_.x[draws_.current][k], draws_.y[draws_.current][k]};
+    }
+    void start_blocks();
+    void enter_block(uint32_t b);
+    // Block b's values into draws_ slot `slot`, from the pixel's seeds (kept for the first kSeedBlocks blocks
+    // while the samples stay in one pixel).
+    void compute_block(uint32_t b, uint32_t slot);
 
     // Moves past the dimensions a 1D (n = 1) or 2D (n = 2) draw would take, as get_1d() / get_2d() advance
     // them (sobol: one either way; halton: wrapping past its primes).
@@ -278,6 +248,13 @@ private:
     uint32_t reversed_index_ = 0; // sobol: reverse_bits(index_)
     uint64_t pixel_hash_ = 0;
     PCG32 rng_, pixel_rng_;
+    // sobol, where blocks are computed in vector lanes (blocks_): the block of draws at hand and the next.
+    bool blocks_ = false;
+    DrawBlocks draws_;
+    static constexpr uint32_t kSeedBlocks = 8;
+    uint64_t seeds_pixel_hash_ = 0; // the pixel whose seeds seeds_ holds (bit b of seeds_valid_: block b's)
+    uint32_t seeds_valid_ = 0;
+    sampling_detail::SobolBlockSeeds seeds_[kSeedBlocks];
 
     // The other kinds' state.
     Randomization randomization_ = Randomization::fast_owen;

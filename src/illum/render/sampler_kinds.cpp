@@ -96,7 +96,9 @@ Sampler::Sampler(SamplerKind kind, int samples_per_pixel, uint64_t seed, const S
     if (res.x <= 0 || res.y <= 0) res = {kMaxHaltonResolution, kMaxHaltonResolution};
     switch (kind) {
     case SamplerKind::independent:
+        break;
     case SamplerKind::sobol:
+        blocks_ = sampling_detail::sobol_blocks_vectorised();
         break;
     case SamplerKind::zsobol: {
         // Sample indices of a pixel: spp rounded up to a power of two (pbrt-v4 rounds down, which lets a
