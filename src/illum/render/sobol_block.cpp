@@ -138,7 +138,10 @@ bool sobol_blocks_vectorised() {
 #if defined(__AVX2__)
     return true;
 #else
-    static const bool avx2 = __builtin_cpu_supports("avx2");
+    static const bool avx2 = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") != 0;
+    }();
     return avx2;
 #endif
 }
