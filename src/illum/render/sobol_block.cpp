@@ -1,6 +1,6 @@
 #include "illum/render/sobol_block.h"
 
-#if defined(__x86_64__) || defined(__i386__)
+#if defined(__x86_64__)
 #include <immintrin.h>
 #define ILLUM_SOBOL_AVX2 1
 #endif
