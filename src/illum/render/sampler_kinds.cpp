@@ -17,6 +17,7 @@ namespace {
 
 using namespace low_discrepancy;
 using sampling_detail::bits_to_unit_float;
+using sampling_detail::dimension_hash;
 using sampling_detail::sobol_dim0;
 using sampling_detail::sobol_dim1;
 
@@ -330,13 +331,13 @@ Point2f Sampler::zsobol_2d(uint32_t dim) {
 }
 
 float Sampler::padded_1d(uint32_t dim) const {
-    const uint64_t h = mix_bits(pixel_hash_ + (uint64_t(dim) + 1) * kGolden);
+    const uint64_t h = dimension_hash(pixel_hash_, dim);
     const uint32_t i = permutation_element(round_index_, uint32_t(spp_), uint32_t(h));
     return bits_to_unit_float(scramble_base2(sobol_dim0(i), uint32_t(h >> 32), randomization_));
 }
 
 Point2f Sampler::padded_2d(uint32_t dim) const {
-    const uint64_t h = mix_bits(pixel_hash_ + (uint64_t(dim) + 1) * kGolden), h2 = mix_bits(h);
+    const uint64_t h = dimension_hash(pixel_hash_, dim), h2 = mix_bits(h);
     const uint32_t i = permutation_element(round_index_, uint32_t(spp_), uint32_t(h));
     return {bits_to_unit_float(scramble_base2(sobol_dim0(i), uint32_t(h2), randomization_)),
             bits_to_unit_float(scramble_base2(sobol_dim1(i), uint32_t(h2 >> 32), randomization_))};
@@ -357,14 +358,14 @@ float Sampler::halton_dimension(uint32_t dim) const {
 // stratified: sample i's stratum is element i of a permutation of [0, spp) per (pixel, dimension); the
 // jitter a hash of (pixel, dimension, i), so any dimension can be asked for in any order.
 float Sampler::stratified_1d(uint32_t dim) const {
-    const uint64_t h = mix_bits(pixel_hash_ + (uint64_t(dim) + 1) * kGolden);
+    const uint64_t h = dimension_hash(pixel_hash_, dim);
     const uint32_t stratum = permutation_element(round_index_, uint32_t(spp_), uint32_t(h));
     const float delta = jitter_ ? bits_to_unit_float(uint32_t(mix_bits(h ^ round_index_))) : 0.5f;
     return std::min((float(stratum) + delta) / float(spp_), kOneMinusEpsilon);
 }
 
 Point2f Sampler::stratified_2d(uint32_t dim) const {
-    const uint64_t h = mix_bits(pixel_hash_ + (uint64_t(dim) + 1) * kGolden);
+    const uint64_t h = dimension_hash(pixel_hash_, dim);
     const uint32_t stratum = permutation_element(round_index_, uint32_t(spp_), uint32_t(h));
     const uint64_t j = mix_bits(h ^ round_index_);
     const float dx = jitter_ ? bits_to_unit_float(uint32_t(j)) : 0.5f;
@@ -386,7 +387,7 @@ float Sampler::blue_noise(uint32_t dim) const {
 }
 
 float Sampler::pmj02bn_1d(uint32_t dim) const {
-    const uint64_t h = mix_bits(pixel_hash_ + (uint64_t(dim) + 1) * kGolden);
+    const uint64_t h = dimension_hash(pixel_hash_, dim);
     const uint32_t i = permutation_element(round_index_, uint32_t(spp_), uint32_t(h));
     return std::min((float(i) + blue_noise(dim)) / float(spp_), kOneMinusEpsilon);
 }
@@ -397,8 +398,7 @@ Point2f Sampler::pmj02bn_2d(uint32_t dim) const {
     const uint32_t instance = dim / 2;
     uint32_t i = round_index_;
     if (instance >= uint32_t(kPmjSets) || round_ > 0)
-        i = permutation_element(i, uint32_t(spp_),
-                                uint32_t(mix_bits(pixel_hash_ + (uint64_t(dim) + 1) * kGolden)));
+        i = permutation_element(i, uint32_t(spp_), uint32_t(dimension_hash(pixel_hash_, dim)));
     const uint32_t set = instance % kPmjSets;
     const pmj02::FixedPoint2 p = set == 0 ? tables_->pmj->pixel_sequence[i] : tables_->sets[set - 1][i];
     float x = fixed_to_float(p.x) + blue_noise(dim), y = fixed_to_float(p.y) + blue_noise(dim + 1);

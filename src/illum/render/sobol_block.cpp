@@ -9,21 +9,18 @@ namespace illum::sampling_detail {
 
 void sobol_block_seeds_scalar(uint64_t pixel_hash, uint32_t first_dim, SobolBlockSeeds* seeds) {
     for (uint32_t k = 0; k < kSobolBlock; ++k) {
-        const uint64_t h = sobol_dimension_hash(pixel_hash, first_dim + k);
+        const uint64_t h = dimension_hash(pixel_hash, first_dim + k);
         seeds->index[k] = uint32_t(h);
         seeds->x[k] = uint32_t(h >> 32);
         seeds->y[k] = uint32_t(mix_bits(h));
     }
 }
 
-// sobol_owen_2d with the seeds at hand.
 void sobol_block_scalar(const SobolBlockSeeds& seeds, uint32_t reversed_index, float* x, float* y) {
     for (uint32_t k = 0; k < kSobolBlock; ++k) {
-        const uint32_t i_reversed = laine_karras_permutation(reversed_index, seeds.index[k]);
-        x[k] =
-            bits_to_unit_float(reverse_bits(laine_karras_permutation(reverse_bits(i_reversed), seeds.x[k])));
-        y[k] = bits_to_unit_float(
-            reverse_bits(laine_karras_permutation(sobol_dim1_reversed(i_reversed), seeds.y[k])));
+        const Point2f p = sobol_owen_2d_seeded(reversed_index, seeds.index[k], seeds.x[k], seeds.y[k]);
+        x[k] = p.x;
+        y[k] = p.y;
     }
 }
 
@@ -111,7 +108,7 @@ ILLUM_AVX2 inline __m256 unit_floats8(__m256i bits) {
 
 ILLUM_AVX2 void sobol_block_seeds_avx2(uint64_t pixel_hash, uint32_t first_dim, SobolBlockSeeds* seeds) {
     constexpr uint64_t kWeyl = 0x9e3779b97f4a7c15ULL;
-    // sobol_dimension_hash of dimensions first_dim + k: the Weyl steps k · kWeyl added to dimension
+    // dimension_hash of dimensions first_dim + k: the Weyl steps k · kWeyl added to dimension
     // first_dim's.
     const __m256i base = _mm256_set1_epi64x(int64_t(pixel_hash + (uint64_t(first_dim) + 1) * kWeyl));
     const __m256i steps0 = _mm256_setr_epi64x(0, int64_t(kWeyl), int64_t(2 * kWeyl), int64_t(3 * kWeyl));

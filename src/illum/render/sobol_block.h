@@ -67,26 +67,33 @@ inline uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
 // A 32-bit fraction to float in [0, 1): the top 24 bits times 2^-24 (rounding could otherwise give 1).
 inline float bits_to_unit_float(uint32_t x) { return float(x >> 8) * 0x1p-24f; }
 
-// Dimension dim's hash: one finaliser round per dimension (a Weyl step keeps dimensions apart); the pixel
-// hash already mixes (seed, pixel).
-inline uint64_t sobol_dimension_hash(uint64_t pixel_hash, uint32_t dim) {
+// Dimension dim's hash, the seed of the per-(pixel, dimension) randomisations of the sobol, paddedsobol,
+// stratified and pmj02bn kinds: one finaliser round per dimension (a Weyl step keeps dimensions apart); the
+// pixel hash already mixes (seed, pixel).
+inline uint64_t dimension_hash(uint64_t pixel_hash, uint32_t dim) {
     return mix_bits(pixel_hash + (uint64_t(dim) + 1) * 0x9e3779b97f4a7c15ULL);
 }
 
-// Sample `index` (given as reverse_bits(index)) of Owen-scrambled Sobol' dimensions (0, 1) with dimension
-// dim's seeds: the index is itself Owen-scrambled (shuffled), i = nested_uniform_scramble(index), then each
-// coordinate nested_uniform_scramble(sobol_dimk(i)). Kept in reversed bits where the Laine-Karras
-// permutation wants them: LK(reverse(index)) is reverse(i); sobol_dim0(i) = reverse(i), so
-// x = reverse(LK(i)); y comes from sobol_dim1_reversed(reverse(i)). A 1D draw is the x of the 2D one.
-inline Point2f sobol_owen_2d(uint64_t pixel_hash, uint32_t reversed_index, uint32_t dim) {
-    uint64_t h = sobol_dimension_hash(pixel_hash, dim), h2 = mix_bits(h);
-    uint32_t i_reversed = laine_karras_permutation(reversed_index, uint32_t(h));
-    uint32_t x = reverse_bits(laine_karras_permutation(reverse_bits(i_reversed), uint32_t(h >> 32)));
-    uint32_t y = reverse_bits(laine_karras_permutation(sobol_dim1_reversed(i_reversed), uint32_t(h2)));
+// Sample `index` (given as reverse_bits(index)) of Owen-scrambled Sobol' dimensions (0, 1) with one
+// dimension's seeds: the index is itself Owen-scrambled (shuffled), i = nested_uniform_scramble(index), then
+// each coordinate nested_uniform_scramble(sobol_dimk(i)). Kept in reversed bits where the Laine-Karras
+// permutation wants them: LK(reverse(index)) is reverse(i); sobol_dim0(i) = reverse(i), so x =
+// reverse(LK(i)); y comes from sobol_dim1_reversed(reverse(i)). A 1D draw is the x of the 2D one.
+inline Point2f sobol_owen_2d_seeded(uint32_t reversed_index, uint32_t index_seed, uint32_t x_seed,
+                                    uint32_t y_seed) {
+    uint32_t i_reversed = laine_karras_permutation(reversed_index, index_seed);
+    uint32_t x = reverse_bits(laine_karras_permutation(reverse_bits(i_reversed), x_seed));
+    uint32_t y = reverse_bits(laine_karras_permutation(sobol_dim1_reversed(i_reversed), y_seed));
     return {bits_to_unit_float(x), bits_to_unit_float(y)};
 }
+// The seeds of dimension dim: uint32_t(h) shuffles the index, uint32_t(h >> 32) scrambles x and
+// uint32_t(mix_bits(h)) y, with h = dimension_hash(pixel_hash, dim).
+inline Point2f sobol_owen_2d(uint64_t pixel_hash, uint32_t reversed_index, uint32_t dim) {
+    const uint64_t h = dimension_hash(pixel_hash, dim);
+    return sobol_owen_2d_seeded(reversed_index, uint32_t(h), uint32_t(h >> 32), uint32_t(mix_bits(h)));
+}
 inline float sobol_owen_1d(uint64_t pixel_hash, uint32_t reversed_index, uint32_t dim) {
-    uint64_t h = sobol_dimension_hash(pixel_hash, dim);
+    uint64_t h = dimension_hash(pixel_hash, dim);
     uint32_t i = reverse_bits(laine_karras_permutation(reversed_index, uint32_t(h)));
     return bits_to_unit_float(reverse_bits(laine_karras_permutation(i, uint32_t(h >> 32))));
 }
@@ -96,9 +103,9 @@ constexpr uint32_t kSobolBlock = 8; // dimensions per block
 // The seeds of a block's dimensions: they depend on the pixel and the dimension, not on the sample index,
 // so the samples of one pixel share them (half of a block's work is the two hashes).
 struct SobolBlockSeeds {
-    uint32_t index[kSobolBlock]; // uint32_t(h): the index shuffle's
-    uint32_t x[kSobolBlock];     // uint32_t(h >> 32): dimension 0's scramble
-    uint32_t y[kSobolBlock];     // uint32_t(mix_bits(h)): dimension 1's scramble
+    uint32_t index[kSobolBlock]; // as sobol_owen_2d's: the index shuffle's,
+    uint32_t x[kSobolBlock];     // x's scramble's
+    uint32_t y[kSobolBlock];     // and y's
 };
 
 // Whether the blocks run in vector lanes here (AVX2); otherwise the sampler draws dimension by dimension.
