@@ -15,16 +15,14 @@ SphereShape::SphereShape(const Transform& world_from_object, float radius, float
       theta_zmax_(std::acos(std::clamp(zmax_ / radius_, -1.0, 1.0))),
       phimax_(std::clamp(double(phimax), 0.0, 2 * kPiD)) {
     full_ = zmin_ <= -radius_ && zmax_ >= radius_ && phimax_ >= 2 * kPiD;
+    Vector3f err;
+    center_ = to_world(Vec3d{}, &err);
+    world_radius_ = float(scale() * radius_);
     init_area();
 }
 
 SphereShape::SphereShape(Point3f center, float radius, bool flip_normal)
     : SphereShape(Transform::translate(Vector3f(center)), radius, -radius, radius, 2 * kPi, flip_normal) {}
-
-Point3f SphereShape::center() const {
-    Vector3f err;
-    return to_world(Vec3d{}, &err);
-}
 
 // |o + t d|² = r²: a t² + 2 b t + c = 0 with a = d·d, b = o·d, c = o·o - r². The discriminant
 // b² - a c = a (r² - |o - (b/a) d|²) is formed from the ray's distance to the centre, which does not

@@ -23,8 +23,8 @@ public:
     // it can be cone sampled, and Embree's native sphere could stand for it.
     bool is_round() const { return full_ && is_similarity() && !alpha(); }
     // World-space centre and radius (meaningful under a similarity transform).
-    Point3f center() const;
-    float world_radius() const { return float(scale() * radius_); }
+    Point3f center() const { return center_; }
+    float world_radius() const { return world_radius_; }
 
     std::optional<ShapeSample> sample(const ShapeSampleContext& ctx, Point2f u) const override;
     SolidAnglePdf pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,
@@ -48,6 +48,10 @@ private:
 
     double radius_, zmin_, zmax_, theta_zmin_, theta_zmax_, phimax_;
     bool full_;
+    // The world centre (the object origin carried by the transform) and scale × radius, kept: next-event
+    // estimation asks for both at every light sample.
+    Point3f center_;
+    float world_radius_;
 };
 
 } // namespace illum
