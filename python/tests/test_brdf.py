@@ -3,7 +3,6 @@
 
 import json
 import math
-import time
 
 import numpy as np
 import pytest
@@ -133,40 +132,15 @@ def test_albedo_agrees_with_cli(cli):
     assert brdf.albedo("mirror", {}, 10, samples=1000)["quadrature"] is None  # a delta model
 
 
-def _best_of(runs, f):
-    best = math.inf
-    for _ in range(runs):
-        t = time.perf_counter()
-        f()
-        best = min(best, time.perf_counter() - t)
-    return best
-
-
-def _speed_ratio(model, params, single_calls=2000):
-    """Time of 10^6 single evaluations in a Python loop (from `single_calls`, extrapolated) over the time
-    of one vectorised call on 10^6 directions."""
+def test_vectorised_eval_is_the_single_calls():
+    # The vectorised call evaluates each row as a single call does: the same floats. (How much time it
+    # saves is a benchmark's question, not a test's: python/bench/brdf_vectorised.py.)
     rng = np.random.default_rng(4)
-    n = 10**6
-    wi, wo = random_directions(rng, n), random_directions(rng, n)
-    vectorised = _best_of(3, lambda: brdf.eval(model, params, wi, wo))
-
-    def loop():
-        for i in range(single_calls):
-            brdf.eval(model, params, wi[i], wo[i])
-
-    looped = _best_of(3, loop) * n / single_calls
-    return looped / vectorised
-
-
-def test_vectorised_eval_is_50x_a_python_loop():
-    # Lambert: what is measured is the vectorisation (the model costs a few ns, a Python call about a µs).
-    ratio = _speed_ratio("lambert", {})
-    print(f"brdf.eval lambert: vectorised 10^6 is {ratio:.0f}x a Python loop")
-    assert ratio >= 50
-    # A microfacet model's own evaluation (about 70 ns) bounds the gain; still well above a loop.
-    ratio = _speed_ratio("rough-conductor", {"alpha": 0.2})
-    print(f"brdf.eval rough-conductor: vectorised 10^6 is {ratio:.0f}x a Python loop")
-    assert ratio >= 10
+    wi, wo = random_directions(rng, 200), random_directions(rng, 200)
+    for model, params in [("lambert", {}), ("rough-conductor", {"alpha": 0.2}), ("ward", {})]:
+        f = brdf.eval(model, params, wi, wo)
+        for i in range(len(wi)):
+            assert np.array_equal(f[i], brdf.eval(model, params, wi[i], wo[i])), (model, i)
 
 
 @pytest.mark.parametrize("call,message", [
