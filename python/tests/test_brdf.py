@@ -143,6 +143,19 @@ def test_vectorised_eval_is_the_single_calls():
             assert np.array_equal(f[i], brdf.eval(model, params, wi[i], wo[i])), (model, i)
 
 
+def test_the_speed_benchmark_runs(capsys):
+    # python/bench/brdf_vectorised.py, on a few directions: it stays runnable (its figures are not checked).
+    import importlib.util
+    import pathlib
+    path = pathlib.Path(__file__).resolve().parents[1] / "bench" / "brdf_vectorised.py"
+    spec = importlib.util.spec_from_file_location("brdf_vectorised", path)
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    bench.main(n=1000, single_calls=10)
+    rows = [line for line in capsys.readouterr().out.splitlines() if line.startswith("| ")]
+    assert len(rows) == 1 + len(bench.MODELS)  # the header and one row per model
+
+
 @pytest.mark.parametrize("call,message", [
     (lambda: brdf.eval("nope", {}, [0, 0, 1], [0, 0, 1]), "unknown BRDF model 'nope' (known: lambert, "),
     (lambda: brdf.eval("lambert", {"foo": 1}, [0, 0, 1], [0, 0, 1]),
