@@ -13,6 +13,7 @@ set(CMAKE_CXX_FLAGS
     CACHE STRING "")
 set(CMAKE_EXE_LINKER_FLAGS "-fsanitize=address,undefined" CACHE STRING "")
 set(CMAKE_SHARED_LINKER_FLAGS "-fsanitize=address,undefined" CACHE STRING "")
+set(CMAKE_MODULE_LINKER_FLAGS "-fsanitize=address,undefined" CACHE STRING "") # illum-http.so
 set(ILLUM_SANITIZE ON CACHE BOOL "")
 set(ILLUM_FUZZ ON CACHE BOOL "")
 # The benchmark kernels say nothing under ASan; `make bench` builds them in the normal build.

@@ -11,7 +11,8 @@
 #include <vector>
 
 #ifdef ILLUM_HAVE_MPI
-#include <mpi.h>
+#include "../plugins/mpi_shim.h"
+#include "load_module.h"
 #endif
 
 namespace illum::cli {
@@ -28,12 +29,12 @@ bool launched_by_mpi() {
     return false;
 }
 
+// The MPI module's calls (illum-mpi.so, loaded when a launcher started the process).
+const IllumMpiShim* g_mpi = nullptr;
+
 class MpiGroup final : public RenderGroup {
 public:
-    MpiGroup() {
-        MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-        MPI_Comm_size(MPI_COMM_WORLD, &size_);
-    }
+    MpiGroup(int rank, int size) : rank_(rank), size_(size) {}
     int rank() const override { return rank_; }
     int size() const override { return size_; }
 
@@ -41,23 +42,15 @@ public:
         auto t0 = std::chrono::steady_clock::now();
         // In pieces whose count fits MPI's int.
         constexpr std::size_t kPiece = std::size_t(1) << 26;
-        for (std::size_t i = 0; i < values.size(); i += kPiece) {
-            int n = int(std::min(kPiece, values.size() - i));
-            double* p = values.data() + i;
-            if (rank_ == 0)
-                MPI_Reduce(MPI_IN_PLACE, p, n, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
-            else
-                MPI_Reduce(p, nullptr, n, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
-            // A broadcast of rank 0's sum rather than an allreduce, whose rounding may differ by rank.
-            if (everywhere) MPI_Bcast(p, n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
-        }
+        for (std::size_t i = 0; i < values.size(); i += kPiece)
+            g_mpi->sum_doubles(values.data() + i, int(std::min(kPiece, values.size() - i)),
+                               everywhere ? 1 : 0);
         communication_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
 
     bool broadcast(bool value) override {
         auto t0 = std::chrono::steady_clock::now();
-        int v = value ? 1 : 0;
-        MPI_Bcast(&v, 1, MPI_INT, 0, MPI_COMM_WORLD);
+        int v = g_mpi->broadcast_int(value ? 1 : 0);
         communication_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         return v != 0;
     }
@@ -90,13 +83,28 @@ extern "C" void on_stop_signal(int signal) {
 MpiRun::MpiRun(int* argc, char*** argv) {
 #ifdef ILLUM_HAVE_MPI
     if (!launched_by_mpi()) return;
-    // Only the main thread calls MPI (between the parallel passes).
-    int provided = 0;
-    MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
-    g_group = new MpiGroup();
+    std::string error;
+    auto entry = reinterpret_cast<const IllumMpiShim* (*)()>(
+        plugin::module_symbol("illum-mpi.so", "illum_mpi_shim", &error));
+    const IllumMpiShim* shim = entry ? entry() : nullptr;
+    if (shim && shim->version != kIllumMpiShimVersion) {
+        error = "illum-mpi.so is from another build (interface " + std::to_string(shim->version) + ", not " +
+                std::to_string(kIllumMpiShimVersion) + ")";
+        shim = nullptr;
+    }
+    if (!shim) {
+        // Before main's handlers exist: said here, with the exit code of every other failure.
+        fmt::print(stderr, "error: an MPI launcher started illum, but its MPI module did not load: {}\n",
+                   error);
+        std::exit(2);
+    }
+    g_mpi = shim;
+    int rank = 0, size = 1;
+    g_mpi->init(argc, argv, &rank, &size);
+    g_group = new MpiGroup(rank, size);
     if (g_group->size() > 1) {
-        std::snprintf(g_signal_message, sizeof g_signal_message,
-                      "error: rank %d of %d: stopped by signal ", g_group->rank(), g_group->size());
+        std::snprintf(g_signal_message, sizeof g_signal_message, "error: rank %d of %d: stopped by signal ",
+                      g_group->rank(), g_group->size());
         for (int sig : {SIGTERM, SIGINT, SIGHUP, SIGXCPU, SIGUSR1, SIGUSR2}) std::signal(sig, on_stop_signal);
     }
 #else
@@ -110,7 +118,7 @@ MpiRun::~MpiRun() {
     if (!g_group) return;
     delete g_group;
     g_group = nullptr;
-    MPI_Finalize();
+    g_mpi->finalize();
 #endif
 }
 
@@ -128,7 +136,7 @@ void MpiRun::agree(const std::string& error) {
     const int rank = g_group->rank(), size = g_group->size();
     int length = int(error.size());
     std::vector<int> lengths(std::size_t(size), 0);
-    MPI_Allgather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    g_mpi->allgather_int(length, lengths.data());
     bool failed = false;
     for (int l : lengths) failed |= l > 0;
     if (!failed) return;
@@ -137,13 +145,13 @@ void MpiRun::agree(const std::string& error) {
     int total = 0;
     for (int r = 0; r < size; ++r) offsets[std::size_t(r)] = total, total += lengths[std::size_t(r)];
     std::string all(std::size_t(rank == 0 ? total : 0), '\0');
-    MPI_Gatherv(error.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0,
-                MPI_COMM_WORLD);
+    g_mpi->gather_chars(error.data(), length, all.data(), lengths.data(), offsets.data());
     if (rank == 0) {
         std::map<std::string, std::vector<int>> by_message;
         for (int r = 0; r < size; ++r)
             if (lengths[std::size_t(r)] > 0)
-                by_message[all.substr(std::size_t(offsets[std::size_t(r)]), std::size_t(lengths[std::size_t(r)]))]
+                by_message[all.substr(std::size_t(offsets[std::size_t(r)]),
+                                      std::size_t(lengths[std::size_t(r)]))]
                     .push_back(r);
         for (const auto& [message, ranks] : by_message) {
             std::string who;
@@ -151,7 +159,8 @@ void MpiRun::agree(const std::string& error) {
                 if (!who.empty()) who += ',';
                 who += std::to_string(r);
             }
-            fmt::print(stderr, "error: rank{} {} of {}: {}\n", ranks.size() > 1 ? "s" : "", who, size, message);
+            fmt::print(stderr, "error: rank{} {} of {}: {}\n", ranks.size() > 1 ? "s" : "", who, size,
+                       message);
         }
         fmt::print(stderr, "error: the render did not start; no output was written\n");
     }
@@ -163,7 +172,7 @@ void MpiRun::agree(const std::string& error) {
 
 void MpiRun::abort(int code) {
 #ifdef ILLUM_HAVE_MPI
-    if (g_group && g_group->size() > 1) MPI_Abort(MPI_COMM_WORLD, code);
+    if (g_group && g_group->size() > 1) g_mpi->abort(code);
 #endif
     std::fflush(stderr);
     std::_Exit(code);

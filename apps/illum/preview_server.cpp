@@ -2,29 +2,43 @@
 
 #include <cstdio>
 #include <fmt/core.h>
-#include <httplib.h>
 
 #include "illum/image/exr.h"
 #include "illum/image/ldr.h"
 #include "illum/image/tonemap.h"
 #include "illum/util/error.h"
+#include "load_module.h"
 #include "preview_page.h"
 
 namespace illum::cli {
 
 namespace {
 
+using plugin::HttpRequest;
+using plugin::HttpResponse;
+
+// A new server from the module illum-http.so (loaded on the first preview).
+std::unique_ptr<plugin::HttpServer> new_http_server() {
+    std::string error;
+    auto make = reinterpret_cast<plugin::HttpServer* (*)(int)>(
+        plugin::module_symbol("illum-http.so", "illum_http_server_new", &error));
+    plugin::HttpServer* server = make ? make(kIllumHttpShimVersion) : nullptr;
+    if (make && !server) error = "illum-http.so is from another build";
+    if (!server) throw Error("cannot serve the preview: " + error);
+    return std::unique_ptr<plugin::HttpServer>(server);
+}
+
 // A query parameter as a number, or `fallback` when absent; false when present but not a number.
-bool query_number(const httplib::Request& req, const char* name, double fallback, double& value) {
+bool query_number(const HttpRequest& req, const char* name, double fallback, double& value) {
     value = fallback;
-    if (!req.has_param(name)) return true;
-    const std::string s = req.get_param_value(name);
+    if (!req.has(name)) return true;
+    const std::string s = req.get(name);
     char* end = nullptr;
     value = std::strtod(s.c_str(), &end);
     return !s.empty() && end && *end == '\0' && std::isfinite(value);
 }
 
-void bad_request(httplib::Response& res, const std::string& why) {
+void bad_request(HttpResponse& res, const std::string& why) {
     res.status = 400;
     res.set_content(why + "\n", "text/plain");
 }
@@ -47,34 +61,34 @@ ServeAddress parse_serve_address(const std::string& text) {
 }
 
 PreviewServer::PreviewServer(const ServeAddress& address, int width, int height, int total_spp)
-    : address_(address), server_(std::make_unique<httplib::Server>()), start_(std::chrono::steady_clock::now()) {
+    : address_(address), server_(new_http_server()), start_(std::chrono::steady_clock::now()) {
     state_.image = Image(width, height);
     state_.total_spp = total_spp;
-    httplib::Server& s = *server_;
-    s.Get("/", [](const httplib::Request&, httplib::Response& res) {
+    plugin::HttpServer& s = *server_;
+    s.get("/", [](const HttpRequest&, HttpResponse& res) {
         res.set_content(kPreviewPage, "text/html; charset=utf-8");
     });
-    s.Get("/status", [this](const httplib::Request& req, httplib::Response& res) {
+    s.get("/status", [this](const HttpRequest& req, HttpResponse& res) {
         double after = -1;
         if (!query_number(req, "after", -1, after)) return bad_request(res, "after must be a frame number");
         res.set_header("Cache-Control", "no-store");
         res.set_content(status_json(int(after)), "application/json");
     });
-    s.Get("/frame.png", [this](const httplib::Request& req, httplib::Response& res) {
+    s.get("/frame.png", [this](const HttpRequest& req, HttpResponse& res) {
         double exposure = 0;
         if (!query_number(req, "exposure", 0, exposure)) return bad_request(res, "exposure must be a number");
-        auto tonemap = tonemap_from_string(req.has_param("tonemap") ? req.get_param_value("tonemap") : "clamp");
+        auto tonemap = tonemap_from_string(req.has("tonemap") ? req.get("tonemap") : "clamp");
         if (!tonemap) return bad_request(res, "tonemap must be clamp, reinhard or aces");
         State st = snapshot();
         res.set_header("Cache-Control", "no-store");
         res.set_content(encode_png(st.image, *tonemap, float(exposure)), "image/png");
     });
-    s.Get("/image.exr", [this](const httplib::Request&, httplib::Response& res) {
+    s.get("/image.exr", [this](const HttpRequest&, HttpResponse& res) {
         State st = snapshot();
         res.set_header("Content-Disposition", "attachment; filename=\"illum-preview.exr\"");
         res.set_content(encode_exr(st.image), "image/x-exr");
     });
-    s.Get("/pixel", [this](const httplib::Request& req, httplib::Response& res) {
+    s.get("/pixel", [this](const HttpRequest& req, HttpResponse& res) {
         double x = -1, y = -1;
         State st = snapshot();
         if (!query_number(req, "x", -1, x) || !query_number(req, "y", -1, y) || x != std::floor(x) ||
@@ -89,12 +103,13 @@ PreviewServer::PreviewServer(const ServeAddress& address, int width, int height,
                         "application/json");
     });
     if (address.port == 0) {
-        int port = s.bind_to_any_port(address.host.c_str());
+        int port = s.bind_to_any_port(address.host);
         if (port <= 0) throw Error("cannot serve the preview on " + address.host + ": no free port");
         address_.port = port;
-    } else if (!s.bind_to_port(address.host.c_str(), address.port)) {
-        throw Error(fmt::format("cannot serve the preview on {}:{} (in use, or not an address of this machine)",
-                                address.host, address.port));
+    } else if (!s.bind_to_port(address.host, address.port)) {
+        throw Error(
+            fmt::format("cannot serve the preview on {}:{} (in use, or not an address of this machine)",
+                        address.host, address.port));
     }
     thread_ = std::thread([this] { server_->listen_after_bind(); });
 }
@@ -146,11 +161,12 @@ std::string PreviewServer::status_json(int after) {
     const double pixels = double(st.image.width()) * st.image.height();
     const double rate = st.elapsed > 0 ? st.spp * pixels / st.elapsed : 0;
     const double eta = st.done ? 0 : st.fraction > 0 ? st.elapsed * (1 - st.fraction) / st.fraction : -1;
-    return fmt::format("{{\"width\": {}, \"height\": {}, \"spp\": {}, \"total_spp\": {}, \"frames\": {}, "
-                       "\"fraction\": {:.6g}, \"elapsed\": {:.6g}, \"eta\": {:.6g}, \"samples_per_second\": {:.6g}, "
-                       "\"done\": {}}}",
-                       st.image.width(), st.image.height(), st.spp, st.total_spp, st.frames, st.fraction,
-                       st.elapsed, eta, rate, st.done ? "true" : "false");
+    return fmt::format(
+        "{{\"width\": {}, \"height\": {}, \"spp\": {}, \"total_spp\": {}, \"frames\": {}, "
+        "\"fraction\": {:.6g}, \"elapsed\": {:.6g}, \"eta\": {:.6g}, \"samples_per_second\": {:.6g}, "
+        "\"done\": {}}}",
+        st.image.width(), st.image.height(), st.spp, st.total_spp, st.frames, st.fraction, st.elapsed, eta,
+        rate, st.done ? "true" : "false");
 }
 
 } // namespace illum::cli

@@ -1,8 +1,10 @@
-// The live preview of `illum render --serve HOST:PORT`: a small HTTP server (cpp-httplib, Debian's) on its
+// The live preview of `illum render --serve HOST:PORT`: a small HTTP server (cpp-httplib, Debian's, in the
+// module illum-http.so that the first preview loads: apps/plugins/http_shim.h) on its
 // own thread that serves one page (preview_page.h) and the render's state: the image so far as PNG (with
 // the page's exposure and tone map) or EXR (linear, to save), the linear radiance of a pixel, and the
-// progress, long-polled (/status?after=FRAME answers when a newer frame has landed). It binds to the loopback address unless a host is given, answers only its own routes, and
-// stops when the render command is done with it.
+// progress, long-polled (/status?after=FRAME answers when a newer frame has landed). It binds to the loopback
+// address unless a host is given, answers only its own routes, and stops when the render command is done with
+// it.
 #pragma once
 
 #include <chrono>
@@ -15,9 +17,7 @@
 #include "illum/image/image.h"
 #include "illum/render/render_preview.h"
 
-namespace httplib {
-class Server;
-}
+#include "../plugins/http_shim.h"
 
 namespace illum::cli {
 
@@ -56,7 +56,7 @@ private:
     std::string status_json(int after);
 
     ServeAddress address_;
-    std::unique_ptr<httplib::Server> server_;
+    std::unique_ptr<plugin::HttpServer> server_; // from illum-http.so
     std::thread thread_;
     mutable std::mutex mutex_;
     std::condition_variable changed_; // a frame landed, the render ended, or the server is stopping
