@@ -4,6 +4,9 @@
 // every sampler agree within noise.
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
+
 #include <fmt/format.h>
 
 #include "illum/light/diffuse_area_light.h"
@@ -185,6 +188,54 @@ TEST(LightBounds, ZeroImportanceOnlyWhereTheLightDeliversNothing) {
         }
         EXPECT_GT(zeros, 1000) << kind; // the one-sided and spot lights turn away from many receivers
     }
+}
+
+// importance_pair (the light BVH's two children in SSE lanes) gives importance()'s values bit for bit:
+// the scene's lights and the BVH's unions of them, and random bounds (one- and two-sided, points, wide and
+// narrow cones, receivers inside and outside the boxes, with and without a normal), two at a time.
+TEST(LightBounds, ImportancePairIsImportanceBitForBit) {
+    std::vector<PreparedLightBounds> bounds;
+    auto scene = build(many_lights_scene("bvh"));
+    std::optional<LightBounds> all;
+    for (const auto& l : scene->lights)
+        if (std::optional<LightBounds> b = l->bounds()) {
+            bounds.emplace_back(*b);
+            all = all ? union_of(*all, *b) : *b;
+        }
+    bounds.emplace_back(*all);
+    PCG32 rng(23);
+    auto u = [&] { return rng.uniform_float(); };
+    for (int i = 0; i < 200; ++i) {
+        LightBounds b;
+        Point3f c{4 * u() - 2, 4 * u() - 2, 4 * u() - 2};
+        b.bounds.extend(c);
+        if (i % 5 != 0) b.bounds.extend(c + Vector3f{u(), u() * u(), 0.5f * u()}); // else a point
+        b.w = sample_uniform_sphere({u(), u()});
+        b.phi = 10 * u();
+        b.cos_theta_o = i % 3 == 0 ? -1 : 2 * u() - 1;
+        b.cos_theta_e = i % 4 == 0 ? 0 : u();
+        b.two_sided = i % 2 == 0;
+        bounds.emplace_back(b);
+    }
+    int compared = 0, nonzero = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        const PreparedLightBounds& a = bounds[rng.uniform_uint32() % bounds.size()];
+        const PreparedLightBounds& b = bounds[rng.uniform_uint32() % bounds.size()];
+        LightSampleContext ctx = random_receiver(rng);
+        if (trial % 3 == 0) ctx.p = a.centre + Vector3f{u() - 0.5f, u() - 0.5f, u() - 0.5f} * (0.1f * u());
+        if (trial % 7 == 0) ctx.p = b.centre;
+        if (trial % 2 == 0) ctx.n = Normal3f{};
+        float pa = -1, pb = -1;
+        importance_pair(a, b, ctx.p, ctx.n, &pa, &pb);
+        const float ea = a.importance(ctx.p, ctx.n), eb = b.importance(ctx.p, ctx.n);
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(pa), std::bit_cast<std::uint32_t>(ea)) << "trial " << trial;
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(pb), std::bit_cast<std::uint32_t>(eb)) << "trial " << trial;
+        compared += 2;
+        nonzero += (ea > 0) + (eb > 0);
+    }
+    EXPECT_EQ(compared, 8000);
+    EXPECT_GT(nonzero, 2000); // not only the zeros of turned-away lights
+    EXPECT_LT(nonzero, 7900); // nor only lit receivers
 }
 
 // pmf() sums to one over the lights (less what the BVH loses, below), agrees with the probability sample()

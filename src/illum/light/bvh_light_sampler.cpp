@@ -114,8 +114,8 @@ std::uint32_t BvhLightSampler::build(std::vector<Item>& items, std::size_t begin
 float BvhLightSampler::first_child_probability(const Node& node, std::uint32_t index, Point3f p,
                                                Normal3f n) const {
     if (node.fixed_p0 >= 0) return node.fixed_p0;
-    float c0 = nodes_[index + 1].prepared.importance(p, n);
-    float c1 = nodes_[node.second_or_light].prepared.importance(p, n);
+    float c0, c1;
+    importance_pair(nodes_[index + 1].prepared, nodes_[node.second_or_light].prepared, p, n, &c0, &c1);
     return c0 / (c0 + c1);
 }
 

@@ -45,6 +45,13 @@ struct PreparedLightBounds {
     float importance(Point3f p, Normal3f n) const; // LightBounds::importance
 };
 
+// importance() of a and of b at one receiver, the two in the lanes of one SSE register where the processor
+// has them: the light BVH asks for both children of every node it passes, and the two chains of square
+// roots and divisions then run side by side. The values are importance()'s bit for bit (the same
+// operations in the same order, lane by lane).
+void importance_pair(const PreparedLightBounds& a, const PreparedLightBounds& b, Point3f p, Normal3f n,
+                     float* importance_a, float* importance_b);
+
 // A point emitter of strength phi sending light every way (θo = π, θe = π/2).
 LightBounds point_bounds(Point3f p, float phi);
 
