@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "illum/math/fast_trig.h"
 #include "illum/math/frame.h"
 
 namespace illum {
@@ -15,8 +16,7 @@ SphereShape::SphereShape(const Transform& world_from_object, float radius, float
       theta_zmax_(std::acos(std::clamp(zmax_ / radius_, -1.0, 1.0))),
       phimax_(std::clamp(double(phimax), 0.0, 2 * kPiD)) {
     full_ = zmin_ <= -radius_ && zmax_ >= radius_ && phimax_ >= 2 * kPiD;
-    Vector3f err;
-    center_ = to_world(Vec3d{}, &err);
+    center_ = to_world(Vec3d{}, &center_error_);
     world_radius_ = float(scale() * radius_);
     init_area();
 }
@@ -107,23 +107,31 @@ std::optional<ShapeSample> SphereShape::sample(const ShapeSampleContext& ctx, Po
     }
     // The point on the sphere: angle α at the centre from the direction towards the receiver.
     float cos_alpha = sin2_theta / std::sqrt(sin2_max) + cos_theta * safe_sqrt(1 - sin2_theta / sin2_max);
-    float sin_alpha = safe_sqrt(1 - cos_alpha * cos_alpha);
-    float phi = u.y * 2 * kPi;
+    float sin_alpha = std::clamp(safe_sqrt(1 - cos_alpha * cos_alpha), 0.0f, 1.0f);
+    cos_alpha = std::clamp(cos_alpha, -1.0f, 1.0f);
+    float sin_phi, cos_phi;
+    fast_sincos_2pi(u.y, &sin_phi, &cos_phi); // φ = 2π u.y
     Frame frame = Frame::from_z(normalize(c - ctx.p));
-    // +z of the frame points from the receiver to the centre; the point faces the receiver, at -z.
-    Vector3f w = spherical_direction(sin_alpha, cos_alpha, phi);
-    Vector3f n_world = frame.to_world(Vector3f{-w.x, -w.y, -w.z});
+    // +z of the frame points from the receiver to the centre; the point faces the receiver, at -z: its
+    // outward normal is -(sin α cos φ, sin α sin φ, cos α) in the frame.
+    Vector3f n_world = frame.to_world(Vector3f{-sin_alpha * cos_phi, -sin_alpha * sin_phi, -cos_alpha});
     // Uniform over the cone's solid angle 2π (1 - cos θmax).
     SolidAnglePdf pdf(1 / (2 * kPi * one_minus_cos_max));
-    Vec3d p_object = to_object(c + n_world * world_radius());
-    return ShapeSample{ctx.uv_needed ? world_sample(p_object) : world_sample_without_uv(p_object), pdf};
+    ShapeSample s{world_point(n_world), pdf};
+    if (ctx.uv_needed) s.uv = surface_at(to_object(s.p)).uv; // the same point, whether uv is asked or not
+    return s;
 }
 
-ShapePoint SphereShape::world_sample_without_uv(Vec3d p) const {
-    Vec3d n = normal_towards(p); // surface_at's point and normal
+// The point c + r n of the world sphere (centre c, radius r) in the direction n, its error bound and its
+// oriented normal: the error of the centre's transform, then of r n and of the sum (one rounding each)
+// and of n's length after normalising (a few ulp), all within γ6 (|c| + |r n|).
+ShapePoint SphereShape::world_point(Vector3f n_world) const {
+    Vector3f n = normalize(n_world);
+    Vector3f d = n * world_radius_;
     ShapePoint s;
-    s.p = to_world(n * radius_, &s.p_error);
-    s.n = world_normal(n);
+    s.p = center_ + d;
+    s.p_error = center_error_ + (abs(Vector3f(center_)) + abs(d)) * gamma_bound(6);
+    s.n = Normal3f(flip_normal() ? -n : n);
     return s;
 }
 

@@ -43,14 +43,16 @@ protected:
 private:
     // Whether sample() draws from the subtended cone for a receiver at p (else by area).
     bool cone_sampling(Point3f p) const;
-    // world_sample without the uv (left zero): the same point, error bound and normal.
-    ShapePoint world_sample_without_uv(Vec3d p) const;
+    // The world point in the outward direction n_world from the centre (a unit vector up to rounding),
+    // without its uv (left zero).
+    ShapePoint world_point(Vector3f n_world) const;
 
     double radius_, zmin_, zmax_, theta_zmin_, theta_zmax_, phimax_;
     bool full_;
     // The world centre (the object origin carried by the transform) and scale × radius, kept: next-event
     // estimation asks for both at every light sample.
     Point3f center_;
+    Vector3f center_error_;
     float world_radius_;
 };
 
