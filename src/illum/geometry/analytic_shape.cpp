@@ -184,9 +184,15 @@ int AnalyticShape::crossings(const Ray& ray, float tmin, float tmax, Crossing ou
     // Embree calls a user geometry of one primitive for every ray it traces (the primitive's BVH is a
     // single leaf, whose box it does not test), so most rays end here, before the double-precision roots.
     if (cull_valid_ && misses_bounds(ray, tmin, tmax)) return 0;
-    Vec3d o = to_object(ray.o), d = to_object(ray.d);
     double t[2];
-    int n = roots(o, d, t), count = 0;
+    int n = world_roots(ray, t), count = 0;
+    if (n >= 0) {
+        for (int i = 0; i < n; ++i)
+            if (t[i] > tmin && t[i] < tmax) out[count++] = {t[i], Vec3d{}, i};
+        return count;
+    }
+    Vec3d o = to_object(ray.o), d = to_object(ray.d);
+    n = roots(o, d, t);
     for (int i = 0; i < n; ++i) {
         if (!(t[i] > tmin && t[i] < tmax)) continue;
         Vec3d p = o + d * t[i];

@@ -52,7 +52,7 @@ inline int solve_quadratic(double a, double b, double c, double disc, double t[2
 // the shape's equation it is (0 near, 1 far: the alpha test draws an independent number for each).
 struct Crossing {
     double t = 0;
-    Vec3d p;
+    Vec3d p; // the object-space point, for the alpha test (zero where the roots come from world_roots)
     int root = 0;
 };
 
@@ -114,6 +114,9 @@ protected:
     // on it lies within the clipped part.
     virtual int roots(Vec3d o, Vec3d d, double t[2]) const = 0;
     virtual bool inside_clip(Vec3d p) const = 0;
+    // The roots of the world-space ray with the surface where a shape can find them without the object
+    // space (a whole round sphere without alpha: nothing to clip, no object point needed), else -1.
+    virtual int world_roots(const Ray&, double[2]) const { return -1; }
     // The surface point nearest to the (almost on-surface) object point p.
     virtual SurfacePoint surface_at(Vec3d p) const = 0;
     // The outward normal, of any length, at the surface point nearest p (surface_at's n unnormalised).

@@ -18,6 +18,9 @@ SphereShape::SphereShape(const Transform& world_from_object, float radius, float
     full_ = zmin_ <= -radius_ && zmax_ >= radius_ && phimax_ >= 2 * kPiD;
     center_ = to_world(Vec3d{}, &center_error_);
     world_radius_ = float(scale() * radius_);
+    const Matrix4& m = world_from_object.matrix();
+    center_d_ = {m(0, 3), m(1, 3), m(2, 3)};
+    world_radius_d_ = scale() * radius_;
     init_area();
 }
 
@@ -27,12 +30,25 @@ SphereShape::SphereShape(Point3f center, float radius, bool flip_normal)
 // |o + t d|² = r²: a t² + 2 b t + c = 0 with a = d·d, b = o·d, c = o·o - r². The discriminant
 // b² - a c = a (r² - |o - (b/a) d|²) is formed from the ray's distance to the centre, which does not
 // cancel as b² - a c does for distant origins (Haines et al., Ray Tracing Gems ch. 7, 2019).
-int SphereShape::roots(Vec3d o, Vec3d d, double t[2]) const {
-    double a = dot(d, d), b = dot(o, d), c = dot(o, o) - radius_ * radius_;
+namespace {
+int sphere_roots(Vec3d o, Vec3d d, double radius, double t[2]) {
+    double a = dot(d, d), b = dot(o, d), c = dot(o, o) - radius * radius;
     if (a == 0) return 0;
     Vec3d f = o - d * (b / a);
-    double disc = a * (radius_ * radius_ - dot(f, f));
+    double disc = a * (radius * radius - dot(f, f));
     return solve_quadratic(a, b, c, disc, t);
+}
+} // namespace
+
+int SphereShape::roots(Vec3d o, Vec3d d, double t[2]) const { return sphere_roots(o, d, radius_, t); }
+
+// A round sphere is the world sphere about the transformed origin with radius scale × r, and the roots of
+// o + t d with it are those of the object-space ray: |M^-1 (o + t d)| = r is |o + t d - c| = s r for a
+// similarity M. Under a translation the operations are the object space's, bit for bit.
+int SphereShape::world_roots(const Ray& ray, double t[2]) const {
+    if (!is_round()) return -1;
+    Vec3d o{double(ray.o.x) - center_d_.x, double(ray.o.y) - center_d_.y, double(ray.o.z) - center_d_.z};
+    return sphere_roots(o, Vec3d{ray.d.x, ray.d.y, ray.d.z}, world_radius_d_, t);
 }
 
 bool SphereShape::inside_clip(Vec3d p) const {

@@ -32,6 +32,7 @@ public:
 
 protected:
     int roots(Vec3d o, Vec3d d, double t[2]) const override;
+    int world_roots(const Ray& ray, double t[2]) const override;
     bool inside_clip(Vec3d p) const override;
     SurfacePoint surface_at(Vec3d p) const override;
     Vec3d outward_at(Vec3d p) const override { return p; } // surface_at's n = p / |p|
@@ -54,6 +55,9 @@ private:
     Point3f center_;
     Vector3f center_error_;
     float world_radius_;
+    // The same in double, for world_roots: the transform's image of the origin and scale × radius.
+    Vec3d center_d_;
+    double world_radius_d_;
 };
 
 } // namespace illum
