@@ -141,8 +141,12 @@ ShadingPartials TriangleMesh::shading_partials(std::uint32_t tri, Point3f local)
     return s;
 }
 
-TriangleShape::TriangleShape(const TriangleMesh* mesh, std::uint32_t index) : mesh_(mesh), index_(index) {
-    auto v = mesh_->vertices(index_);
+TriangleShape::TriangleShape(const TriangleMesh* mesh, std::uint32_t index)
+    : mesh_(mesh), index_(index), v_(mesh->vertices(index)) {
+    const auto& v = v_;
+    if (!mesh_->uv.empty())
+        for (int k = 0; k < 3; ++k)
+            uv_[std::size_t(k)] = mesh_->uv[mesh_->indices[3 * index_ + std::uint32_t(k)]];
     area_normal_ = cross(v[1] - v[0], v[2] - v[0]);
     area_ = 0.5f * length(area_normal_);
     centroid_ = Point3f((Vector3f(v[0]) + Vector3f(v[1]) + Vector3f(v[2])) / 3);
@@ -150,23 +154,18 @@ TriangleShape::TriangleShape(const TriangleMesh* mesh, std::uint32_t index) : me
 
 Bounds3f TriangleShape::bounds() const {
     Bounds3f b;
-    for (auto& v : mesh_->vertices(index_)) b.extend(v);
+    for (const Point3f& v : v_) b.extend(v);
     return b;
 }
 
 ShapePoint TriangleShape::at_barycentrics(float b0, float b1, float b2) const {
-    auto v = mesh_->vertices(index_);
+    const auto& v = v_;
     ShapePoint s;
     s.p = barycentric(v[0], v[1], v[2], b0, b1, b2);
     s.p_error =
         (abs(Vector3f(v[0]) * b0) + abs(Vector3f(v[1]) * b1) + abs(Vector3f(v[2]) * b2)) * gamma_bound(6);
     s.n = mesh_->geometric_normal(index_);
-    Point2f uv0{0, 0}, uv1{1, 0}, uv2{1, 1};
-    if (!mesh_->uv.empty()) {
-        uv0 = mesh_->uv[mesh_->indices[3 * index_]];
-        uv1 = mesh_->uv[mesh_->indices[3 * index_ + 1]];
-        uv2 = mesh_->uv[mesh_->indices[3 * index_ + 2]];
-    }
+    const Point2f &uv0 = uv_[0], &uv1 = uv_[1], &uv2 = uv_[2];
     s.uv = {b0 * uv0.x + b1 * uv1.x + b2 * uv2.x, b0 * uv0.y + b1 * uv1.y + b2 * uv2.y};
     return s;
 }
@@ -185,14 +184,14 @@ bool TriangleShape::use_spherical_sampling(Point3f p) const {
     float estimate = 0.5f * std::abs(dot(area_normal_, d)) / (d2 * std::sqrt(d2));
     if (!(estimate >= kMinSphericalSolidAngle)) return false;
     if (estimate <= 1.0f) return true;
-    float pdf = spherical_triangle_pdf(mesh_->vertices(index_), p);
+    float pdf = spherical_triangle_pdf(v_, p);
     return pdf > 0 && 1 / pdf <= kMaxSphericalSolidAngle;
 }
 
 std::optional<ShapeSample> TriangleShape::sample(const ShapeSampleContext& ctx, Point2f u) const {
     if (!use_spherical_sampling(ctx.p)) return AreaShape::sample(ctx, u);
     float pdf = 0;
-    auto b = sample_spherical_triangle(mesh_->vertices(index_), ctx.p, u, &pdf);
+    auto b = sample_spherical_triangle(v_, ctx.p, u, &pdf);
     if (!(pdf > 0)) return std::nullopt; // degenerate as seen from p: no solid angle to sample
     return ShapeSample{at_barycentrics(b[0], b[1], b[2]), SolidAnglePdf(pdf)};
 }
@@ -201,7 +200,7 @@ SolidAnglePdf TriangleShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Poi
                                  Normal3f n_hit) const {
     if (!use_spherical_sampling(ctx.p)) return AreaShape::pdf(ctx, wi, p_hit, n_hit);
     // Uniform over the spherical triangle: 1 / Ω (Arvo 1995).
-    return SolidAnglePdf(spherical_triangle_pdf(mesh_->vertices(index_), ctx.p));
+    return SolidAnglePdf(spherical_triangle_pdf(v_, ctx.p));
 }
 
 } // namespace illum

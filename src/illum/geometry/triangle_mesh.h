@@ -92,6 +92,11 @@ private:
     ShapePoint at_barycentrics(float b0, float b1, float b2) const;
     const TriangleMesh* mesh_;
     std::uint32_t index_;
+    // The triangle's corners and their uv (pbrt-v4's (0,0), (1,0), (1,1) without any), kept here: a light
+    // sample reads them at every call, and through the mesh's index and vertex arrays that was two loads
+    // in a row for each.
+    std::array<Point3f, 3> v_;
+    std::array<Point2f, 3> uv_{Point2f{0, 0}, Point2f{1, 0}, Point2f{1, 1}};
     float area_;
     Point3f centroid_;
     Vector3f area_normal_; // (p1 - p0) × (p2 - p0): twice the area along the normal
