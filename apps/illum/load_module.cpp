@@ -6,7 +6,7 @@
 
 namespace illum::plugin {
 
-void* module_symbol(const char* file_name, const char* symbol, std::string* error) {
+void* module_symbol(const char* file_name, const char* symbol, ModuleScope scope, std::string* error) {
     std::error_code ec;
     std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
     if (ec) {
@@ -14,8 +14,7 @@ void* module_symbol(const char* file_name, const char* symbol, std::string* erro
         return nullptr;
     }
     const std::string path = (self.parent_path() / file_name).string();
-    // RTLD_LOCAL: the module's libraries (MPI's, OpenSSL's) stay out of the program's symbol lookups.
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    void* handle = dlopen(path.c_str(), RTLD_NOW | (scope == ModuleScope::Global ? RTLD_GLOBAL : RTLD_LOCAL));
     if (!handle) {
         const char* why = dlerror();
         *error = "cannot load " + path + ": " + (why ? why : "unknown error");

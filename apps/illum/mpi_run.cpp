@@ -85,7 +85,7 @@ MpiRun::MpiRun(int* argc, char*** argv) {
     if (!launched_by_mpi()) return;
     std::string error;
     auto entry = reinterpret_cast<const IllumMpiShim* (*)()>(
-        plugin::module_symbol("illum-mpi.so", "illum_mpi_shim", &error));
+        plugin::module_symbol("illum-mpi.so", "illum_mpi_shim", plugin::ModuleScope::Global, &error));
     const IllumMpiShim* shim = entry ? entry() : nullptr;
     if (shim && shim->version != kIllumMpiShimVersion) {
         error = "illum-mpi.so is from another build (interface " + std::to_string(shim->version) + ", not " +

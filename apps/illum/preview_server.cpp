@@ -21,7 +21,7 @@ using plugin::HttpResponse;
 std::unique_ptr<plugin::HttpServer> new_http_server() {
     std::string error;
     auto make = reinterpret_cast<plugin::HttpServer* (*)(int)>(
-        plugin::module_symbol("illum-http.so", "illum_http_server_new", &error));
+        plugin::module_symbol("illum-http.so", "illum_http_server_new", plugin::ModuleScope::Local, &error));
     plugin::HttpServer* server = make ? make(kIllumHttpShimVersion) : nullptr;
     if (make && !server) error = "illum-http.so is from another build";
     if (!server) throw Error("cannot serve the preview: " + error);
