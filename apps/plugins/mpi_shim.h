@@ -1,7 +1,7 @@
 // The MPI calls illum makes, behind a table of C functions that the module illum-mpi.so provides
 // (mpi_shim.cpp). The program loads the module only when an MPI launcher started it (apps/illum/mpi_run.cpp),
 // so an ordinary run does not load Open MPI's or MPICH's libraries at all: they cost about a millisecond of
-// start-up (docs/performance.md, "Start-up").
+// start-up (docs/performance.md, "Start-up without MPI and the HTTP server").
 #pragma once
 
 extern "C" {
