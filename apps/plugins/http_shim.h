@@ -1,8 +1,9 @@
 // The HTTP server of `illum render --serve`, behind an interface that the module illum-http.so provides
 // (http_shim.cpp, on cpp-httplib). The program loads the module only when a preview is asked for
 // (apps/illum/preview_server.cpp), so an ordinary run does not load cpp-httplib and the OpenSSL and Brotli
-// libraries it links: they cost about two milliseconds of start-up (docs/performance.md, "Start-up without MPI and the HTTP server").
-// Program and module are built together by one compiler, so C++ types cross between them.
+// libraries it links: they cost about two milliseconds of start-up (docs/performance.md, "Start-up without
+// MPI and the HTTP server"). Program and module are built together by one compiler, so C++ types cross
+// between them.
 #pragma once
 
 #include <functional>
