@@ -17,10 +17,10 @@ SphereShape::SphereShape(const Transform& world_from_object, float radius, float
       phimax_(std::clamp(double(phimax), 0.0, 2 * kPiD)) {
     full_ = zmin_ <= -radius_ && zmax_ >= radius_ && phimax_ >= 2 * kPiD;
     center_ = to_world(Vec3d{}, &center_error_);
-    world_radius_ = float(scale() * radius_);
     const Matrix4& m = world_from_object.matrix();
     center_d_ = {m(0, 3), m(1, 3), m(2, 3)};
     world_radius_d_ = scale() * radius_;
+    world_radius_ = float(world_radius_d_);
     init_area();
 }
 
