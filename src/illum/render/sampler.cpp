@@ -118,11 +118,11 @@ void Sampler::compute_block(uint32_t b, uint32_t slot) {
     if (b < kSeedBlocks) {
         seeds = &seeds_[b];
         if (!(seeds_valid_ & (1u << b))) {
-            sobol_block_seeds(pixel_hash_, 1 + b * kSobolBlock, &seeds_[b]);
+            sobol_block_seeds(pixel_hash_, b * kSobolBlock, &seeds_[b]);
             seeds_valid_ |= 1u << b;
         }
     } else {
-        sobol_block_seeds(pixel_hash_, 1 + b * kSobolBlock, &scratch);
+        sobol_block_seeds(pixel_hash_, b * kSobolBlock, &scratch);
     }
     sobol_block(*seeds, reversed_index_, draws_.x[slot], draws_.y[slot]);
     draws_.id[slot] = b;
@@ -130,8 +130,8 @@ void Sampler::compute_block(uint32_t b, uint32_t slot) {
 
 void Sampler::start_blocks() {
     draws_.current = 0;
-    draws_.id[0] = DrawBlocks::kNone;
-    compute_block(0, 1);
+    draws_.id[1] = DrawBlocks::kNone;
+    compute_block(0, 0);
 }
 
 void Sampler::enter_block(uint32_t b) {
@@ -140,7 +140,6 @@ void Sampler::enter_block(uint32_t b) {
         c ^= 1;
     else // not computed ahead: a draw past the next block (pass_dimensions) or a resumed old position
         compute_block(b, c);
-    compute_block(b + 1, c ^ 1);
 }
 
 } // namespace illum

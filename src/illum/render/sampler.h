@@ -180,7 +180,13 @@ public:
             float x = r.uniform_float();
             return {x, r.uniform_float()};
         }
-        if (kind_ == SamplerKind::sobol) return sobol_2d(0);
+        if (kind_ == SamplerKind::sobol) {
+            // Dimension 0 is lane 0 of block 0, computed when the sample started.
+            if (blocks_)
+                for (uint32_t slot : {draws_.current, draws_.current ^ 1})
+                    if (draws_.id[slot] == 0) return {draws_.x[slot][0], draws_.y[slot][0]};
+            return sobol_2d(0);
+        }
         return other_pixel_2d();
     }
 
@@ -193,17 +199,19 @@ private:
     Point2f sobol_2d(uint32_t dim) const {
         return sampling_detail::sobol_owen_2d(pixel_hash_, reversed_index_, dim);
     }
-    // The same from the block of eight dimensions that holds dim (>= 1: dimension 0, the pixel's, is drawn
-    // by itself), computed in vector lanes (sobol_block.h); the value does not depend on the way, as the
-    // block's lanes are the scalar draws. A block takes about 110 cycles from its seeds to its values, and a
-    // path that waited for it at its first draw would gain little, so each block is computed one ahead: block
-    // 0 when the sample starts, block b + 1 when the path first draws from block b. The path then finds its
-    // draws computed while it did other work.
+    // The same from the block of eight dimensions that holds dim (block b: dimensions 8b .. 8b + 7),
+    // computed in vector lanes (sobol_block.h); the value does not depend on the way, as the block's lanes
+    // are the scalar draws. A block takes about 110 cycles from its seeds to its values, a chain of
+    // dependent multiplications that stalls the path if it is waited for. Block 0 is computed when the
+    // sample starts (the pixel's offset, dimension 0, is its first draw); block b + 1 when the path draws
+    // from the second half of block b, so that it is ready by the time the path gets there, and not computed
+    // for the paths that end before (on the Cornell box, most).
     Point2f block_draw(uint32_t dim) {
-        const uint32_t b = (dim - 1) / sampling_detail::kSobolBlock,
-                       k = (dim - 1) % sampling_detail::kSobolBlock;
+        const uint32_t b = dim / sampling_detail::kSobolBlock, k = dim % sampling_detail::kSobolBlock;
         if (b != draws_.id[draws_.current]) enter_block(b);
-        return {draws_.x[draws_.current][k], draws_.y[draws_.current][k]};
+        const uint32_t c = draws_.current;
+        if (k >= kAheadFrom && draws_.id[c ^ 1] != b + 1) compute_block(b + 1, c ^ 1);
+        return {draws_.x[c][k], draws_.y[c][k]};
     }
     void start_blocks();
     void enter_block(uint32_t b);
@@ -252,6 +260,7 @@ private:
     bool blocks_ = false;
     DrawBlocks draws_;
     static constexpr uint32_t kSeedBlocks = 8;
+    static constexpr uint32_t kAheadFrom = 4; // the draw of a block from which the next one is computed
     uint64_t seeds_pixel_hash_ = 0; // the pixel whose seeds seeds_ holds (bit b of seeds_valid_: block b's)
     uint32_t seeds_valid_ = 0;
     sampling_detail::SobolBlockSeeds seeds_[kSeedBlocks] = {};
