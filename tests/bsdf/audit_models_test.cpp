@@ -1,6 +1,8 @@
 // The audit of every registered model over its parameter grid (DESIGN.md §4.2): positivity, reciprocity,
 // energy, sample()/f()/pdf() consistency and the chi-square test at fixed seeds, 1% family-wise
 // significance with the Sidak correction over each model's grid.
+#include <algorithm>
+#include <cmath>
 #include <gtest/gtest.h>
 
 #include "illum/analysis/audit.h"
@@ -55,6 +57,63 @@ TEST_P(AuditModel, IgnoresTheLobeSampleWhereItSaysSo) {
             }
         }
     }
+}
+
+// The largest relative change of f() and pdf() over random pairs of directions when both turn together
+// about the normal by a random angle (a direction's rounding under the turn changes them by ~1e-6).
+float rotation_deviation(const BxDF& bxdf) {
+    PCG32 rng(11);
+    float worst = 0;
+    auto relative = [](float a, float b) {
+        return std::abs(a - b) / std::max({std::abs(a), std::abs(b), 1e-6f});
+    };
+    for (int i = 0; i < 500; ++i) {
+        Vector3f wo = sample_uniform_sphere({rng.uniform_float(), rng.uniform_float()}),
+                 wi = sample_uniform_sphere({rng.uniform_float(), rng.uniform_float()});
+        if (wo.z == 0 || wi.z == 0) continue;
+        const float phi = 2 * kPi * rng.uniform_float(), c = std::cos(phi), s = std::sin(phi);
+        auto turn = [&](Vector3f w) { return Vector3f{c * w.x - s * w.y, s * w.x + c * w.y, w.z}; };
+        for (TransportMode mode : {TransportMode::Radiance, TransportMode::Importance}) {
+            Bsdf3 a = bxdf.f(wo, wi, mode), b = bxdf.f(turn(wo), turn(wi), mode);
+            for (int k = 0; k < kSpectrumSamples; ++k) worst = std::max(worst, relative(a.s[k], b.s[k]));
+            worst = std::max(
+                worst, relative(bxdf.pdf(wo, wi, mode).value, bxdf.pdf(turn(wo), turn(wi), mode).value));
+            // A model of delta lobes only has no f() to compare: its sampled direction turns with wo.
+            if (has_flag(bxdf.flags(), kDiffuse) || has_flag(bxdf.flags(), kGlossy)) continue;
+            const float uc = rng.uniform_float();
+            auto sa = bxdf.sample(wo, uc, {0.5f, 0.5f}, mode),
+                 sb = bxdf.sample(turn(wo), uc, {0.5f, 0.5f}, mode);
+            if (bool(sa) != bool(sb)) return 1;
+            if (!sa) continue;
+            worst = std::max(worst, length(turn(sa->wi) - sb->wi));
+            worst = std::max(worst, relative(sa->pdf.value, sb->pdf.value));
+            for (int k = 0; k < kSpectrumSamples; ++k)
+                worst = std::max(worst, relative(sa->f.s[k], sb->f.s[k]));
+        }
+    }
+    return worst;
+}
+
+// A model that says it is isotropic (BxDF::isotropic, so SharedBxDFMaterial places it in a frame without
+// the surface's tangent) must be unchanged by a turn about the normal.
+TEST_P(AuditModel, IsUnchangedByATurnAboutTheNormalWhereItSaysSo) {
+    const ModelSpec& model = find_bxdf_model(GetParam());
+    for (const AuditCase& c : model.audit_grid) {
+        std::unique_ptr<BxDF> bxdf = model.make(resolve_params(model, c.params));
+        if (bxdf->isotropic()) EXPECT_LT(rotation_deviation(*bxdf), 1e-3f) << model.name;
+    }
+}
+
+// The check above can fail: an anisotropic rough conductor changes by far more under a turn.
+TEST(AuditIsotropy, SeesAnAnisotropicModelChange) {
+    const ModelSpec& model = find_bxdf_model("rough-conductor");
+    std::unique_ptr<BxDF> aniso = model.make(
+        resolve_params(model, std::map<std::string, std::string>{{"alpha_x", "0.1"}, {"alpha_y", "0.4"}}));
+    EXPECT_FALSE(aniso->isotropic());
+    EXPECT_GT(rotation_deviation(*aniso), 0.1f);
+    std::unique_ptr<BxDF> iso =
+        model.make(resolve_params(model, std::map<std::string, std::string>{{"alpha", "0.3"}}));
+    EXPECT_TRUE(iso->isotropic());
 }
 
 std::vector<std::string> all_models() {

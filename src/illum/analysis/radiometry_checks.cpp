@@ -23,7 +23,7 @@ public:
         may_be_specular = false;
     }
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths&, ScratchArena& arena) const override {
-        return BSDF(make_(SampledSpectrum(reflectance_), arena), hit.shading_frame());
+        return placed(make_(SampledSpectrum(reflectance_), arena), hit);
     }
     Color3 albedo(const SurfaceHit&) const override { return reflectance_; }
 

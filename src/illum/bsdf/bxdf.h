@@ -85,6 +85,11 @@ public:
     // dimension for uc uncomputed (Sampler::get_1d_if). The audit checks that such a model's samples do not
     // depend on uc.
     virtual bool reads_lobe_sample() const { return true; }
+    // Whether f() and pdf() are unchanged when wo and wi turn together about the normal, and sample() turns
+    // with wo (its directions' distribution does). Such a model may be placed in any frame around the shading
+    // normal: SharedBxDFMaterial then builds one from the normal alone (Frame::from_z: no square root, no
+    // tangent). The audit checks the claim.
+    virtual bool isotropic() const { return false; }
     virtual SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode mode) const = 0;
     // f (wo.z and wi.z nonzero) and, in a model that computes them with f at little extra cost, the two
     // densities (has_pdfs): the values f() and pdf() give. By default f alone: a caller that needs the

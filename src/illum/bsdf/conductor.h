@@ -21,6 +21,7 @@ public:
         ILLUM_REQUIRE(in_range(k, 0, 1e4f), "conductor", "k must be >= 0, got " + str(k));
     }
     std::uint8_t flags() const override { return kSpecularReflection; }
+    bool isotropic() const override { return true; }
     Bsdf3 f(Vector3f, Vector3f, TransportMode) const override { return {}; }
     SolidAnglePdf pdf(Vector3f, Vector3f, TransportMode) const override { return SolidAnglePdf(0); }
     bool reads_lobe_sample() const override { return false; }

@@ -20,6 +20,7 @@ public:
     std::uint8_t flags() const override {
         return fresnel_.eta == 1 ? kSpecularTransmission : (kSpecularReflection | kSpecularTransmission);
     }
+    bool isotropic() const override { return true; }
     Bsdf3 f(Vector3f, Vector3f, TransportMode) const override { return {}; }
     SolidAnglePdf pdf(Vector3f, Vector3f, TransportMode) const override { return SolidAnglePdf(0); }
 

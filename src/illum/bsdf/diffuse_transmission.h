@@ -25,6 +25,7 @@ public:
         p_r_ = r + t > 0 ? r / (r + t) : 0.5f;
     }
     std::uint8_t flags() const override { return kDiffuseReflection | kDiffuseTransmission; }
+    bool isotropic() const override { return true; }
 
     Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode) const override {
         if (wo.z == 0 || wi.z == 0) return {};

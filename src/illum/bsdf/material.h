@@ -15,6 +15,13 @@
 
 namespace illum {
 
+// A BxDF placed at a hit: in the frame of the shading normal and the surface's tangent ∂p/∂u, or, for a
+// model that looks the same in any frame about the normal (BxDF::isotropic), in one built from the normal
+// alone (Frame::from_z: no square root for the path's next direction to wait for).
+inline BSDF placed(const BxDF* bxdf, const SurfaceHit& hit) {
+    return BSDF(bxdf, bxdf->isotropic() ? Frame::from_z(hit.ns) : hit.shading_frame());
+}
+
 class Material {
 public:
     virtual ~Material() = default;
@@ -75,7 +82,7 @@ public:
     }
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
         SampledSpectrum r = reflectance_->albedo(hit, lambda);
-        return BSDF(arena.make<LambertBxDF>(r), hit.shading_frame());
+        return placed(arena.make<LambertBxDF>(r), hit);
     }
     Color3 albedo(const SurfaceHit& hit) const override {
         return clamp(reflectance_->evaluate(hit), 0.0f, 1.0f);

@@ -20,7 +20,7 @@ public:
         albedo_ = Color3(float(a[0]), float(a[1]), float(a[2]));
     }
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
-        return BSDF(arena.make<MeasuredBxDF>(data_.get(), &lambda), hit.shading_frame());
+        return placed(arena.make<MeasuredBxDF>(data_.get(), &lambda), hit);
     }
     Color3 albedo(const SurfaceHit&) const override { return albedo_; }
 

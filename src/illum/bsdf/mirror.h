@@ -14,6 +14,7 @@ public:
                       "reflectance must be in [0, 1], got " + str(reflectance));
     }
     std::uint8_t flags() const override { return kSpecularReflection; }
+    bool isotropic() const override { return true; }
     Bsdf3 f(Vector3f, Vector3f, TransportMode) const override { return {}; }
     SolidAnglePdf pdf(Vector3f, Vector3f, TransportMode) const override { return SolidAnglePdf(0); }
     bool reads_lobe_sample() const override { return false; }

@@ -26,6 +26,7 @@ public:
     }
 
     std::uint8_t flags() const override { return reflectance_.is_black() ? kNone : kDiffuseReflection; }
+    bool isotropic() const override { return true; }
 
     Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode) const override {
         if (!same_hemisphere(wo, wi)) return {};

@@ -79,7 +79,7 @@ public:
             b = arena.make<ConductorBxDF>(eta, k);
         else
             b = arena.make<RoughConductorBxDF>(ggx(a), Fresnel{eta, k, FresnelMode::Exact});
-        return BSDF(b, hit.shading_frame());
+        return placed(b, hit);
     }
     Color3 albedo(const SurfaceHit& hit) const override {
         SampledWavelengths rgb = SampledWavelengths::rgb_mode();
@@ -119,7 +119,7 @@ public:
             b = arena.make<DielectricBxDF>(eta);
         else
             b = arena.make<RoughDielectricBxDF>(ggx(a), eta);
-        return BSDF(b, hit.shading_frame());
+        return placed(b, hit);
     }
     Color3 albedo(const SurfaceHit&) const override { return Color3(1.0f); }
 
@@ -151,10 +151,10 @@ public:
         : reflectance_(reflectance), eta_(std::move(eta)), coat_(coat), layer_(layer) {}
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
         SampledSpectrum r = reflectance_->albedo(hit, lambda);
-        return BSDF(arena.make<CoatedDiffuseBxDF>(DielectricInterface(eta_.at(lambda), coat_.alpha(hit)),
-                                                  LambertBxDF(r), layer_.medium(hit, lambda),
-                                                  layer_.max_depth, layer_.samples),
-                    hit.shading_frame());
+        return placed(arena.make<CoatedDiffuseBxDF>(DielectricInterface(eta_.at(lambda), coat_.alpha(hit)),
+                                                    LambertBxDF(r), layer_.medium(hit, lambda),
+                                                    layer_.max_depth, layer_.samples),
+                      hit);
     }
     Color3 albedo(const SurfaceHit& hit) const override {
         return clamp(reflectance_->evaluate(hit), 0.0f, 1.0f);
@@ -181,10 +181,10 @@ public:
         SampledSpectrum eta, k;
         conductor_->index(hit, lambda, &eta, &k);
         ConductorInterface base(Fresnel{eta / ieta, k / ieta, FresnelMode::Exact}, rough_.alpha(hit));
-        return BSDF(arena.make<CoatedConductorBxDF>(DielectricInterface(ieta, interface_.alpha(hit)), base,
-                                                    layer_.medium(hit, lambda), layer_.max_depth,
-                                                    layer_.samples),
-                    hit.shading_frame());
+        return placed(arena.make<CoatedConductorBxDF>(DielectricInterface(ieta, interface_.alpha(hit)), base,
+                                                      layer_.medium(hit, lambda), layer_.max_depth,
+                                                      layer_.samples),
+                      hit);
     }
     Color3 albedo(const SurfaceHit& hit) const override { return conductor_->albedo(hit); }
 
@@ -209,7 +209,7 @@ public:
             r /= m;
             t /= m;
         }
-        return BSDF(arena.make<DiffuseTransmissionBxDF>(r, t), hit.shading_frame());
+        return placed(arena.make<DiffuseTransmissionBxDF>(r, t), hit);
     }
     Color3 albedo(const SurfaceHit& hit) const override {
         return clamp(r_->evaluate(hit) * scale_, 0.0f, 1.0f);

@@ -32,6 +32,7 @@ public:
                       "k must be >= 0, got " + str(fresnel.k));
     }
     std::uint8_t flags() const override { return kGlossyReflection; }
+    bool isotropic() const override { return distrib_.alpha_x() == distrib_.alpha_y(); }
 
     Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode) const override {
         if (!same_hemisphere(wo, wi)) return {};

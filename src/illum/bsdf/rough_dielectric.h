@@ -26,6 +26,7 @@ public:
                       "eta must be in (0, 100], got " + str(eta));
     }
     std::uint8_t flags() const override { return kGlossyReflection | kGlossyTransmission; }
+    bool isotropic() const override { return distrib_.alpha_x() == distrib_.alpha_y(); }
     float eta() const { return fresnel_.eta; }
 
     Bsdf3 f(Vector3f wo, Vector3f wi, TransportMode mode) const override {

@@ -29,6 +29,7 @@ public:
         return rgb_->pdf(wo, wi, mode);
     }
     bool reads_lobe_sample() const override { return rgb_->reads_lobe_sample(); }
+    bool isotropic() const override { return rgb_->isotropic(); }
 
 private:
     const BxDF* rgb_;
@@ -40,11 +41,15 @@ public:
     // albedo: what the albedo pass shows (e.g. the directional albedo at normal incidence).
     SharedBxDFMaterial(std::unique_ptr<BxDF> bxdf, Color3 albedo,
                        std::unique_ptr<Material> spectral = nullptr)
-        : bxdf_(std::move(bxdf)), albedo_(albedo), spectral_(std::move(spectral)) {}
+        : bxdf_(std::move(bxdf)), albedo_(albedo), spectral_(std::move(spectral)),
+          isotropic_(bxdf_->isotropic()) {}
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
-        if (!lambda.spectral()) return BSDF(bxdf_.get(), hit.shading_frame());
+        // An isotropic model's frame needs no tangent (BxDF::isotropic): from the shading normal alone it
+        // costs no square root, which the path's next direction would wait for.
+        if (!lambda.spectral())
+            return BSDF(bxdf_.get(), isotropic_ ? Frame::from_z(hit.ns) : hit.shading_frame());
         if (spectral_) return spectral_->bsdf(hit, lambda, arena);
-        return BSDF(arena.make<RgbUpliftBxDF>(bxdf_.get(), lambda), hit.shading_frame());
+        return placed(arena.make<RgbUpliftBxDF>(bxdf_.get(), lambda), hit);
     }
     Color3 albedo(const SurfaceHit&) const override { return albedo_; }
     const BxDF& bxdf() const { return *bxdf_; }
@@ -53,6 +58,7 @@ private:
     std::unique_ptr<BxDF> bxdf_;
     Color3 albedo_;
     std::unique_ptr<Material> spectral_;
+    bool isotropic_;
 };
 
 } // namespace illum

@@ -19,7 +19,7 @@ public:
         : values_(std::move(values)), albedo_(albedo), normal_albedo_(normal_albedo) {}
 
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
-        return BSDF(Place{}(ModelArgs(values_.args, &hit, &lambda), arena), hit.shading_frame());
+        return placed(Place{}(ModelArgs(values_.args, &hit, &lambda), arena), hit);
     }
     Color3 albedo(const SurfaceHit& hit) const override {
         return normal_albedo_ ? normal_albedo_(ModelArgs(values_.args, &hit)) : albedo_;

@@ -19,6 +19,7 @@ public:
                       "eta must be in (0, 100], got " + str(eta));
     }
     std::uint8_t flags() const override { return kSpecularReflection | kSpecularTransmission; }
+    bool isotropic() const override { return true; }
     Bsdf3 f(Vector3f, Vector3f, TransportMode) const override { return {}; }
     SolidAnglePdf pdf(Vector3f, Vector3f, TransportMode) const override { return SolidAnglePdf(0); }
 
