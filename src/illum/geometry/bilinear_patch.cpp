@@ -356,7 +356,7 @@ std::optional<ShapeSample> BilinearPatchShape::sample(const ShapeSampleContext& 
                std::clamp(dot(s->p - c[0], ev) / length_squared(ev), 0.0f, 1.0f)};
     ShapePoint pt = point_at(uv);
     pt.p = s->p;
-    return ShapeSample{pt, SolidAnglePdf(pdf * s->pdf)};
+    return seen_from(ctx.p, pt, SolidAnglePdf(pdf * s->pdf));
 }
 
 SolidAnglePdf BilinearPatchShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,

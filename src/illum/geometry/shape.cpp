@@ -13,7 +13,7 @@ std::optional<ShapeSample> AreaShape::area_to_solid_angle(const ShapeSampleConte
     if (cos_l == 0) return std::nullopt;
     SolidAnglePdf pdf = to_solid_angle(s.pdf, area_per_solid_angle(d2, cos_l));
     if (!pdf.is_finite()) return std::nullopt;
-    return ShapeSample{s, pdf};
+    return ShapeSample{s, pdf, wi};
 }
 
 SolidAnglePdf AreaShape::area_pdf_to_solid_angle(AreaPdf pdf_area, Point3f p_ref, Point3f p_hit,

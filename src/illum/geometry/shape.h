@@ -2,6 +2,7 @@
 // a receiving point where the shape allows it, by area otherwise) and for photon emission (by area).
 #pragma once
 
+#include <cmath>
 #include <optional>
 
 #include "illum/math/bounds.h"
@@ -29,14 +30,26 @@ struct ShapePoint {
     Point2f uv;
 };
 
-// A sampled point and its density, per square metre on the shape (AreaShapeSample, from sample_area())
-// or per steradian at the receiver (ShapeSample, from sample()).
-template <class Pdf>
-struct ShapeSampleOf : ShapePoint {
-    Pdf pdf;
+// A point sampled by area (sample_area()) and its density per square metre on the shape.
+struct AreaShapeSample : ShapePoint {
+    AreaPdf pdf;
 };
-using AreaShapeSample = ShapeSampleOf<AreaPdf>;
-using ShapeSample = ShapeSampleOf<SolidAnglePdf>;
+
+// A point sampled as seen from a receiver (sample()): its density per steradian there, and the unit
+// direction from the receiver to it, which every shape computes on the way (its caller, a light's
+// sample_li(), would otherwise compute it again and wait for a second square root).
+struct ShapeSample : ShapePoint {
+    SolidAnglePdf pdf;
+    Vector3f wi;
+};
+
+// The sample of the point pt seen from `receiver` with density pdf: none where the point is the receiver.
+inline std::optional<ShapeSample> seen_from(Point3f receiver, const ShapePoint& pt, SolidAnglePdf pdf) {
+    Vector3f d = pt.p - receiver;
+    float d2 = length_squared(d);
+    if (d2 == 0) return std::nullopt;
+    return ShapeSample{pt, pdf, d / std::sqrt(d2)};
+}
 
 class AreaShape {
 public:

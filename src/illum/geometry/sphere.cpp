@@ -133,8 +133,8 @@ std::optional<ShapeSample> SphereShape::sample(const ShapeSampleContext& ctx, Po
     Vector3f n_world = frame.to_world(Vector3f{-sin_alpha * cos_phi, -sin_alpha * sin_phi, -cos_alpha});
     // Uniform over the cone's solid angle 2π (1 - cos θmax).
     SolidAnglePdf pdf(1 / (2 * kPi * one_minus_cos_max));
-    ShapeSample s{world_point(n_world), pdf};
-    if (ctx.uv_needed) s.uv = surface_at(to_object(s.p)).uv; // the same point, whether uv is asked or not
+    auto s = seen_from(ctx.p, world_point(n_world), pdf);
+    if (s && ctx.uv_needed) s->uv = surface_at(to_object(s->p)).uv; // the same point, uv asked or not
     return s;
 }
 

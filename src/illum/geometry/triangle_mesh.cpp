@@ -193,7 +193,7 @@ std::optional<ShapeSample> TriangleShape::sample(const ShapeSampleContext& ctx, 
     float pdf = 0;
     auto b = sample_spherical_triangle(v_, ctx.p, u, &pdf);
     if (!(pdf > 0)) return std::nullopt; // degenerate as seen from p: no solid angle to sample
-    return ShapeSample{at_barycentrics(b[0], b[1], b[2]), SolidAnglePdf(pdf)};
+    return seen_from(ctx.p, at_barycentrics(b[0], b[1], b[2]), SolidAnglePdf(pdf));
 }
 
 SolidAnglePdf TriangleShape::pdf(const ShapeSampleContext& ctx, Vector3f wi, Point3f p_hit,

@@ -75,10 +75,7 @@ std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContex
     // uv is read by the emission image and the alpha texture only.
     auto ss = shape_->sample({ctx.p, ctx.p_error, ctx.n, image_ || alpha_}, u);
     if (!ss || !(ss->pdf > SolidAnglePdf(0))) return std::nullopt;
-    Vector3f d = ss->p - ctx.p;
-    float d2 = length_squared(d);
-    if (d2 == 0) return std::nullopt;
-    Vector3f wi = d / std::sqrt(d2);
+    const Vector3f wi = ss->wi;
     Radiance3 l = emitted(ss->n, ss->uv, -wi, lambda);
     if (l.is_black() || masked(ss->p, ss->n, ss->uv)) return std::nullopt;
     return LightLiSample{wi, l, biradiance(l, ss->pdf), ss->pdf, ss->p, ss->p_error, ss->n, false};
