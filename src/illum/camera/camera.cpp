@@ -74,7 +74,9 @@ PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, int wid
 std::optional<CameraRay> PerspectiveCamera::generate_ray(Point2f p, Point2f u_lens, float) const {
     Vector3f dir = normalize(Vector3f{ax_ + bx_ * p.x, ay_ + by_ * p.y, 1});
     Ray r = thin_lens({0, 0, 0}, dir, lens_radius_, focal_distance_, u_lens);
-    return CameraRay{{world_from_camera_(r.o), normalize(world_from_camera_(r.d)), kInfinity}};
+    // A pinhole's rays all leave the lens centre, transformed once.
+    const Point3f o = lens_radius_ > 0 ? world_from_camera_(r.o) : lens_centre_;
+    return CameraRay{{o, normalize(world_from_camera_(r.d)), kInfinity}};
 }
 
 std::optional<CameraRay> PerspectiveCamera::generate_ray_differential(Point2f p, Point2f u_lens, float lambda,

@@ -130,8 +130,8 @@ void Sampler::compute_block(uint32_t b, uint32_t slot) {
 
 void Sampler::start_blocks() {
     draws_.current = 0;
-    draws_.id[1] = DrawBlocks::kNone;
     compute_block(0, 0);
+    compute_block(1, 1);
 }
 
 void Sampler::enter_block(uint32_t b) {

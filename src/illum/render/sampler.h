@@ -202,10 +202,12 @@ private:
     // The same from the block of eight dimensions that holds dim (block b: dimensions 8b .. 8b + 7),
     // computed in vector lanes (sobol_block.h); the value does not depend on the way, as the block's lanes
     // are the scalar draws. A block takes about 110 cycles from its seeds to its values, a chain of
-    // dependent multiplications that stalls the path if it is waited for. Block 0 is computed when the
-    // sample starts (the pixel's offset, dimension 0, is its first draw); block b + 1 when the path draws
-    // from the second half of block b, so that it is ready by the time the path gets there, and not computed
-    // for the paths that end before (on the Cornell box, most).
+    // dependent multiplications that stalls the path wherever it is computed: the stores of its values hold
+    // up the instructions behind them. Blocks 0 and 1 are computed when the sample starts (the pixel's
+    // offset, dimension 0, is block 0's first draw), side by side, and in a camera-ray packet while the
+    // packet's other samples start; a path of two bounces draws from both (on the Cornell box, most paths).
+    // Block b + 1 >= 2 is computed when the path draws from the second half of block b, and not for the
+    // paths that end before.
     Point2f block_draw(uint32_t dim) {
         const uint32_t b = dim / sampling_detail::kSobolBlock, k = dim % sampling_detail::kSobolBlock;
         if (b != draws_.id[draws_.current]) enter_block(b);
