@@ -24,7 +24,11 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
     };
     LightSampleContext prev_ctx;
     Sampler& sampler = tc.sampler;
-    RayDifferentials rd = tc.camera_differentials; // valid only in scenes with filtered textures
+    // The camera ray's differentials, valid only in scenes with filtered textures. Copied only then: the
+    // render loop has just stored them, and a copy of the whole struct would wait for those stores.
+    RayDifferentials rd;
+    if (tc.camera_differentials.valid) [[unlikely]]
+        rd = tc.camera_differentials;
 
     for (int depth = 0;;) {
         SurfaceHit hit;

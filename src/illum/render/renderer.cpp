@@ -237,7 +237,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                 start_sample(tc, x, y, share.index(k++), &s);
                                 sample_x[n] = x;
                                 s.lambda = tc.lambda;
-                                s.rd = tc.camera_differentials;
+                                if (scene.texture_filtering) s.rd = tc.camera_differentials;
                                 s.position = tc.sampler.position();
                                 if (s.cr) {
                                     ray_sample[n_rays] = n;
@@ -253,7 +253,7 @@ RenderResult render(const Scene& scene, const Integrator& integrator, const Rend
                                 const CameraSample& s = batch[j];
                                 tc.sampler.resume(s.position);
                                 tc.lambda = s.lambda;
-                                tc.camera_differentials = s.rd;
+                                if (scene.texture_filtering) tc.camera_differentials = s.rd;
                                 if (r < n_rays && ray_sample[r] == j) {
                                     if (n_rays > 1) {
                                         tc.primed.pending = true;
