@@ -379,7 +379,8 @@ TEST(SobolBlock, VectorLanesAreTheScalarDraws) {
     for (int k = 0; k < 20000; ++k) {
         const uint64_t pixel_hash = (uint64_t(rng.uniform_uint32()) << 32) | rng.uniform_uint32();
         const uint32_t reversed_index = k < 64 ? reverse_bits(uint32_t(k)) : rng.uniform_uint32();
-        const uint32_t first = 1 + kSobolBlock * (rng.uniform_uint32() % 64);
+        // The sampler's blocks start at multiples of eight (dimension 0 in block 0); odd starts too.
+        const uint32_t first = kSobolBlock * (rng.uniform_uint32() % 64) + uint32_t(k & 1);
         SobolBlockSeeds sv, ss;
         sobol_block_seeds_avx2(pixel_hash, first, &sv);
         sobol_block_seeds_scalar(pixel_hash, first, &ss);
@@ -428,6 +429,10 @@ TEST(SobolBlock, SamplerDrawsAreThePerDimensionDraws) {
             }
             ++dim;
         }
+        // Dimension 0 once the path has left block 0 (drawn by itself then).
+        const Point2f late = a.get_pixel_2d(), q_late = sobol_owen_2d(pixel_hash, rev, 0);
+        EXPECT_EQ(late.x, q_late.x);
+        EXPECT_EQ(late.y, q_late.y);
         other.start_pixel_sample(pixel, index);
         const Point2f p0 = other.get_pixel_2d(), q0 = sobol_owen_2d(pixel_hash, rev, 0);
         EXPECT_EQ(p0.x, q0.x);
