@@ -183,6 +183,7 @@ TEST(BilinearPatch, NonRectangularSolidAngleSamplingAgreesWithPdf) {
         auto s = shape.sample(ctx, {rng.uniform_float(), rng.uniform_float()});
         ASSERT_TRUE(s);
         Vector3f wi = normalize(s->p - ctx.p);
+        EXPECT_LT(length(s->wi - wi), 1e-6f) << "the sample's direction is the one to its point";
         float pdf = shape.pdf(ctx, wi, s->p, s->n).value;
         EXPECT_NEAR(pdf, s->pdf.value, 2e-3f * s->pdf.value);
     }

@@ -158,6 +158,7 @@ void expect_solid_angle_pdf(const AnalyticShape& shape, Point3f p, bool near_sid
         auto s = shape.sample(ctx, {rng.uniform_float(), rng.uniform_float()});
         if (!s) continue;
         Vector3f wi = normalize(s->p - p);
+        EXPECT_LT(length(s->wi - wi), 1e-6f) << what << ": the sample's direction is the one to its point";
         float pdf = shape.pdf(ctx, wi, s->p, s->n).value;
         mismatches += !(std::abs(pdf - s->pdf.value) <= 2e-3f * s->pdf.value);
     }

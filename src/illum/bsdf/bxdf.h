@@ -87,8 +87,8 @@ public:
     virtual bool reads_lobe_sample() const { return true; }
     // Whether f() and pdf() are unchanged when wo and wi turn together about the normal, and sample() turns
     // with wo (its directions' distribution does). Such a model may be placed in any frame around the shading
-    // normal: SharedBxDFMaterial then builds one from the normal alone (Frame::from_z: no square root, no
-    // tangent). The audit checks the claim.
+    // normal: the materials then build one from the normal alone (placed() in bsdf/material.h: no square
+    // root, no tangent). The audit checks the claim.
     virtual bool isotropic() const { return false; }
     virtual SolidAnglePdf pdf(Vector3f wo, Vector3f wi, TransportMode mode) const = 0;
     // f (wo.z and wi.z nonzero) and, in a model that computes them with f at little extra cost, the two
