@@ -94,8 +94,8 @@ float rotation_deviation(const BxDF& bxdf) {
     return worst;
 }
 
-// A model that says it is isotropic (BxDF::isotropic, so SharedBxDFMaterial places it in a frame without
-// the surface's tangent) must be unchanged by a turn about the normal.
+// A model that says it is isotropic (BxDF::isotropic, so the materials place it in a frame without the
+// surface's tangent: placed() in bsdf/material.h) must be unchanged by a turn about the normal.
 TEST_P(AuditModel, IsUnchangedByATurnAboutTheNormalWhereItSaysSo) {
     const ModelSpec& model = find_bxdf_model(GetParam());
     for (const AuditCase& c : model.audit_grid) {

@@ -18,9 +18,11 @@ namespace illum {
 // A BxDF placed at a hit: in the frame of the shading normal and the surface's tangent ∂p/∂u, or, for a
 // model that looks the same in any frame about the normal (BxDF::isotropic), in one built from the normal
 // alone (Frame::from_z: no square root for the path's next direction to wait for).
-inline BSDF placed(const BxDF* bxdf, const SurfaceHit& hit) {
-    return BSDF(bxdf, bxdf->isotropic() ? Frame::from_z(hit.ns) : hit.shading_frame());
+// `isotropic` is bxdf->isotropic(), given by a caller that keeps it (a shared model).
+inline BSDF placed(const BxDF* bxdf, const SurfaceHit& hit, bool isotropic) {
+    return BSDF(bxdf, isotropic ? Frame::from_z(hit.ns) : hit.shading_frame());
 }
+inline BSDF placed(const BxDF* bxdf, const SurfaceHit& hit) { return placed(bxdf, hit, bxdf->isotropic()); }
 
 class Material {
 public:

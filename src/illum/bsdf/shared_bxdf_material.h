@@ -44,10 +44,7 @@ public:
         : bxdf_(std::move(bxdf)), albedo_(albedo), spectral_(std::move(spectral)),
           isotropic_(bxdf_->isotropic()) {}
     BSDF bsdf(const SurfaceHit& hit, SampledWavelengths& lambda, ScratchArena& arena) const override {
-        // An isotropic model's frame needs no tangent (BxDF::isotropic): from the shading normal alone it
-        // costs no square root, which the path's next direction would wait for.
-        if (!lambda.spectral())
-            return BSDF(bxdf_.get(), isotropic_ ? Frame::from_z(hit.ns) : hit.shading_frame());
+        if (!lambda.spectral()) return placed(bxdf_.get(), hit, isotropic_);
         if (spectral_) return spectral_->bsdf(hit, lambda, arena);
         return placed(arena.make<RgbUpliftBxDF>(bxdf_.get(), lambda), hit);
     }
@@ -58,7 +55,7 @@ private:
     std::unique_ptr<BxDF> bxdf_;
     Color3 albedo_;
     std::unique_ptr<Material> spectral_;
-    bool isotropic_;
+    bool isotropic_; // bxdf_->isotropic(), kept: placed() without a virtual call per hit
 };
 
 } // namespace illum
