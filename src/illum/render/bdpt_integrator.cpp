@@ -18,6 +18,7 @@
 #include "illum/render/render_arena.h"
 #include "illum/util/error.h"
 #include "illum/util/in_place.h"
+#include "illum/util/line_aligned.h"
 #include "illum/util/progress.h"
 
 namespace illum {
@@ -33,10 +34,11 @@ struct CameraEstimate {
 
 // What one chunk of pixel samples produces, added to the films in chunk order.
 struct ChunkOutput {
-    std::vector<CameraEstimate> estimates;
-    std::vector<Splat> splats;
+    // Written by one thread while the others write theirs: in lines of their own (line_aligned.h).
+    LineAlignedVector<CameraEstimate> estimates;
+    LineAlignedVector<Splat> splats;
     // visualizestrategies / visualizeweights: each strategy's contribution, splatted into its own image.
-    std::vector<std::pair<int, Splat>> strategy_splats;
+    LineAlignedVector<std::pair<int, Splat>> strategy_splats;
     int dropped = 0;
 };
 
@@ -49,11 +51,11 @@ int strategy_index(int s, int t) {
 
 // The subpaths' storage, once per thread: maxdepth + 2 camera and maxdepth + 1 light vertices.
 struct Subpaths {
-    std::vector<PathVertex> camera, light;
+    LineAlignedVector<PathVertex> camera, light;
     PathVertex sampled; // the endpoint a strategy samples (s = 1: a light point, t = 1: the camera's)
     // The weights' running sums over each subpath (subpath_sums), so that a connection's weight costs O(1)
     // beyond the joint.
-    std::vector<float> camera_tail, light_tail;
+    LineAlignedVector<float> camera_tail, light_tail;
 };
 
 float remap0(float f) { return f != 0 ? f : 1.0f; }

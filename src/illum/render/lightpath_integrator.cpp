@@ -37,7 +37,8 @@ LightPathIntegrator::LightPathIntegrator(const Scene& scene, int max_depth, bool
                 scene.camera_type));
 }
 
-int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral, std::vector<Splat>& out) const {
+int LightPathIntegrator::trace_particle(ThreadContext& tc, bool spectral,
+                                        LineAlignedVector<Splat>& out) const {
     Sampler& sampler = tc.sampler;
     int dropped = 0;
     auto splat = [&](Point2f p_raster, const Radiance3& l) {
@@ -253,7 +254,7 @@ RenderResult LightPathIntegrator::render_image(const RenderOptions& options) con
 
     // One chunk's splats and the number of contributions dropped as non-finite.
     struct ChunkSplats {
-        std::vector<Splat> splats;
+        LineAlignedVector<Splat> splats; // written by one thread while others write theirs (line_aligned.h)
         int dropped = 0;
     };
     std::uint64_t nonfinite = 0;

@@ -19,6 +19,7 @@
 
 #include "illum/camera/splat_film.h"
 #include "illum/render/renderer.h"
+#include "illum/util/line_aligned.h"
 
 namespace illum {
 
@@ -36,7 +37,7 @@ public:
 private:
     // Traces one particle with tc's sampler already at its pixel sample; appends its splats to `out`.
     // Returns the number of non-finite or negative contributions dropped.
-    int trace_particle(ThreadContext& tc, bool spectral, std::vector<Splat>& out) const;
+    int trace_particle(ThreadContext& tc, bool spectral, LineAlignedVector<Splat>& out) const;
 
     int max_depth_;
     bool caustics_only_;

@@ -17,6 +17,7 @@
 #include "illum/render/render_arena.h"
 #include "illum/render/vcm_mis.h"
 #include "illum/util/error.h"
+#include "illum/util/line_aligned.h"
 #include "illum/util/progress.h"
 
 namespace illum {
@@ -42,10 +43,11 @@ struct StoredVertex {
 
 // One chunk of light subpaths: its vertices (subpaths in order) and its light-tracing splats.
 struct LightChunk {
-    std::vector<StoredVertex> vertices;
-    std::vector<std::uint32_t> path_begin; // subpath p0 + i starts at vertices[path_begin[i]]
-    std::vector<Splat> splats;
-    std::vector<EntryMedium> entered; // the entered media of its vertices (StoredVertex::entered)
+    // Written by one thread while the others write their chunks: in lines of their own (line_aligned.h).
+    LineAlignedVector<StoredVertex> vertices;
+    LineAlignedVector<std::uint32_t> path_begin; // subpath p0 + i starts at vertices[path_begin[i]]
+    LineAlignedVector<Splat> splats;
+    LineAlignedVector<EntryMedium> entered; // the entered media of its vertices (StoredVertex::entered)
     int dropped = 0;
 };
 
@@ -103,10 +105,10 @@ double radical_inverse_3(std::uint32_t i) {
 
 // Per-thread scratch: a camera subpath, the paired light subpath, and their weights' densities.
 struct Scratch {
-    std::vector<PathVertex> camera, light;
-    std::vector<MisVertex> cmis, lmis, tmp_c, tmp_l;
-    std::vector<float> ctail, ltail, mtail; // mtail: a merged subpath's tail
-    PathVertex sampled;                     // the light point next-event estimation samples (s = 1)
+    LineAlignedVector<PathVertex> camera, light;
+    LineAlignedVector<MisVertex> cmis, lmis, tmp_c, tmp_l;
+    LineAlignedVector<float> ctail, ltail, mtail; // mtail: a merged subpath's tail
+    PathVertex sampled;                           // the light point next-event estimation samples (s = 1)
     explicit Scratch(int max_depth) {
         camera.resize(std::size_t(max_depth) + 2);
         light.resize(std::size_t(max_depth) + 1);

@@ -1,5 +1,6 @@
 // A bump allocator for per-sample scratch objects (a hit's BSDF), reset after each path sample, so the
-// render loop does no heap allocation per ray (DESIGN.md §3). One arena per thread.
+// render loop does no heap allocation per ray (DESIGN.md §3). One arena per thread; its storage owns its
+// cache lines (line_aligned.h), as every path sample writes its first bytes.
 #pragma once
 
 #include <cstddef>
@@ -10,11 +11,14 @@
 #include <type_traits>
 #include <utility>
 
+#include "illum/util/line_aligned.h"
+
 namespace illum {
 
 class ScratchArena {
 public:
-    explicit ScratchArena(std::size_t bytes = 64 * 1024) : storage_(new std::byte[bytes]), capacity_(bytes) {}
+    explicit ScratchArena(std::size_t bytes = 64 * 1024)
+        : storage_(static_cast<std::byte*>(allocate_lines(bytes))), capacity_(bytes) {}
 
     // Objects placed in the arena must be trivially destructible or have their destructor run by
     // the caller: reset() does not call destructors.
@@ -35,7 +39,10 @@ public:
     std::size_t used() const { return used_; }
 
 private:
-    std::unique_ptr<std::byte[]> storage_;
+    struct FreeLines {
+        void operator()(std::byte* p) const { free_lines(p); }
+    };
+    std::unique_ptr<std::byte, FreeLines> storage_;
     std::size_t capacity_;
     std::size_t used_ = 0;
 };
