@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "illum/camera/film.h"
 #include "illum/util/arena.h"
 #include "illum/util/line_aligned.h"
 
@@ -53,6 +54,15 @@ TEST(LineAligned, ScratchArenasOwnTheirLines) {
     for (int i = 0; i < 8; ++i) {
         arenas.push_back(std::make_unique<ScratchArena>(1000));
         EXPECT_TRUE(on_boundary(arenas.back()->allocate(1, 1)));
+    }
+}
+
+// Threads write neighbouring tiles of one film: its sums start on a boundary, so 16-pixel tile rows (512
+// bytes) fall on whole blocks.
+TEST(LineAligned, FilmSumsStartOnABoundary) {
+    for (int w : {4, 17, 64, 320}) {
+        Film film(w, 3);
+        EXPECT_TRUE(on_boundary(film.accumulators().data())) << w;
     }
 }
 

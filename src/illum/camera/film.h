@@ -1,7 +1,8 @@
 // The film accumulates filter-weighted radiance samples per pixel (in double, so thousands of samples
 // per pixel lose nothing) and resolves to an image of the mean radiance, L_pixel = Σ w_i L_i / Σ w_i
 // (PBR 4th ed. §8.8). Each pixel is written by exactly one task at a time, so no synchronisation is
-// needed.
+// needed; the sums start on a 128-byte boundary (util/line_aligned.h), so a 16-pixel tile's row (512
+// bytes) shares no cache line with the next tile's where the width is a multiple of 4.
 #pragma once
 
 #include <span>
@@ -9,6 +10,7 @@
 
 #include "illum/image/image.h"
 #include "illum/radiometry/quantity.h"
+#include "illum/util/line_aligned.h"
 
 namespace illum {
 
@@ -51,7 +53,7 @@ public:
 
 private:
     int width_, height_;
-    std::vector<double> sums_;
+    LineAlignedVector<double> sums_;
 };
 
 } // namespace illum
