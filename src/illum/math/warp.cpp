@@ -34,8 +34,12 @@ Vector3f sample_uniform_hemisphere(Point2f u) {
 }
 
 Vector3f sample_cosine_hemisphere(Point2f u) {
+    // Malley's method: the disk point lifted to the hemisphere, z = √(1 - r²). The concentric map's radius
+    // is r = max(|2u.x - 1|, |2u.y - 1|), so z is computed beside the angle's chain instead of after it
+    // (a BSDF sample's direction is what the next ray waits for).
+    const float r = std::max(std::abs(2 * u.x - 1), std::abs(2 * u.y - 1));
+    const float z = safe_sqrt(1 - r * r);
     Point2f d = sample_uniform_disk_concentric(u);
-    float z = safe_sqrt(1 - d.x * d.x - d.y * d.y);
     return {d.x, d.y, z};
 }
 
