@@ -27,6 +27,14 @@ struct ThreadContext {
     // The current camera ray's differentials (valid only in scenes with filtered textures, set by the
     // render loop; render/texture_footprint.h).
     RayDifferentials camera_differentials;
+    // camera_differentials for an integrator's path: copied only where they are valid, since the render
+    // loop has just stored them and a copy of the whole struct would wait for those stores.
+    RayDifferentials path_differentials() const {
+        RayDifferentials rd;
+        if (camera_differentials.valid) [[unlikely]]
+            rd = camera_differentials;
+        return rd;
+    }
     std::uint64_t rays = 0; // rays traced (closest hit and shadow)
     // The current camera ray's closest hit when the render loop traced it in a packet with the pixel's
     // other samples (Accelerator::find_packet): the integrator's first find() or intersect() of that very

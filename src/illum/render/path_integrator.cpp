@@ -24,11 +24,7 @@ Radiance3 PathIntegrator::radiance(Ray ray, ThreadContext& tc) const {
     };
     LightSampleContext prev_ctx;
     Sampler& sampler = tc.sampler;
-    // The camera ray's differentials, valid only in scenes with filtered textures. Copied only then: the
-    // render loop has just stored them, and a copy of the whole struct would wait for those stores.
-    RayDifferentials rd;
-    if (tc.camera_differentials.valid) [[unlikely]]
-        rd = tc.camera_differentials;
+    RayDifferentials rd = tc.path_differentials(); // valid only in scenes with filtered textures
 
     for (int depth = 0;;) {
         SurfaceHit hit;

@@ -171,9 +171,7 @@ Radiance3 VolPathIntegrator::estimate(const Ray& camera_ray, ThreadContext& tc) 
     float eta_scale = 1;
     int depth = 0;
     LightSampleContext prev_ctx;
-    RayDifferentials rd; // valid only in scenes with filtered textures (PathIntegrator::radiance)
-    if (tc.camera_differentials.valid) [[unlikely]]
-        rd = tc.camera_differentials;
+    RayDifferentials rd = tc.path_differentials(); // valid only in scenes with filtered textures
     const bool entry_media = entry_media_;
 
     // Emission found by the unidirectional technique, weighed against light sampling from prev_ctx.
